@@ -1,0 +1,64 @@
+"""railtrack: periodic response of a railway track on a nonlinear foundation.
+
+A reproduction of T. Hoang, D. Duhamel, G. Foret, H.P. Yin, G. Cumunel,
+"A fast semi-analytical method for computing the response of railway
+tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
+
+=====================  ==============================================
+`railtrack.track`      parameters (Table 1)
+`railtrack.receptance` Section 2.1, eq. (3): the rail's receptance
+`railtrack.sleeper`    Section 2.2, eqs. (4)–(8), (14): pad, coupling P
+`railtrack.train`      Section 2.3, eqs. (9)–(16): the load F
+`railtrack.harmonic_balance`  Section 3, eqs. (17)–(20): residual, AFT
+`railtrack.fixed_point`       eq. (21): the paper's iteration
+`railtrack.newton`     Newton's method on eq. (17)
+`railtrack.foundations`  eqs. (22), (24), (25): foundation laws
+`railtrack.linear`     Section 4.1, eq. (23): analytic linear solution
+`railtrack.solve`      the entry point `solve`
+=====================  ==============================================
+
+SI units throughout.  w is positive upward (the train pushes it negative);
+t = 0 when a front wheel is above the observed sleeper.
+
+>>> import railtrack
+>>> solution = railtrack.solve(railtrack.Track.paper(),
+...                            railtrack.BilinearFoundation.paper(ratio=0.5))
+>>> solution.converged
+True
+"""
+
+from .foundations import (
+    BilinearFoundation,
+    CallableFoundation,
+    CubicFoundation,
+    LinearFoundation,
+    as_foundation,
+)
+from .linear import analytic_coefficients, sweep_speeds
+from .receptance import rail_receptance, rail_receptance_lattice_sum
+from .sleeper import rail_coupling
+from .solution import ConvergenceError, Solution
+from .solve import METHODS, solve
+from .track import Track
+from .train import load_coefficients
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Track",
+    "LinearFoundation",
+    "BilinearFoundation",
+    "CubicFoundation",
+    "CallableFoundation",
+    "as_foundation",
+    "solve",
+    "METHODS",
+    "Solution",
+    "ConvergenceError",
+    "analytic_coefficients",
+    "sweep_speeds",
+    "rail_receptance",
+    "rail_receptance_lattice_sum",
+    "rail_coupling",
+    "load_coefficients",
+]

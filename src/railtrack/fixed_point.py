@@ -1,0 +1,144 @@
+"""The paper's iteration, eq. (21), its convergence factors and the split N0.
+
+Starting from c_{n1} = 0, each step solves eq. (17) for c_n, using the
+previous iterate in every term but one:
+
+    |n| <= N0:  c_{n,k+1} = [(omega_n^2 + P_n) c_nk - F_n - G_nk] / (omega_0^2 + i beta omega_n)
+    |n| >  N0:  c_{n,k+1} = [(omega_0^2 + i beta omega_n) c_nk + F_n + G_nk] / (omega_n^2 + P_n)
+
+with G_nk the AFT harmonics of g(w_mk, w'_mk) (eq. 20).  The printed eq. (21)
+writes a calligraphic F_n where the load F_n of eq. (16) is meant.
+
+For a linear law f = k w + eta w' the error of harmonic n is multiplied at
+every step by the factor of Section 4.1 (`contraction_factors`); the
+iteration converges if and only if every factor is below one.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .harmonic_balance import HarmonicSystem, nonlinear_coefficients, residual_norm
+
+__all__ = [
+    "SolverOutcome",
+    "contraction_factors",
+    "automatic_split",
+    "iterate_fixed_point",
+]
+
+
+class SolverOutcome(NamedTuple):
+    """What a solver hands back to `railtrack.solve`."""
+
+    coefficients: np.ndarray  # c_0..c_m [m]
+    converged: bool
+    iterations: int
+    residual_history: np.ndarray  # relative residual of each iterate, the start included
+    message: str
+    harmonic_residuals: np.ndarray  # |R_n| of the last few iterates, shape (k, m+1)
+
+
+def contraction_factors(system: HarmonicSystem, split: int) -> np.ndarray:
+    """Factor by which eq. (21) multiplies the error of each harmonic, n = 0..m.
+
+    Exact for a linear law (Section 4.1):
+
+        |n| <= N0:  |omega_n^2 + P_n - K_n/M| / |omega_0^2 + i beta omega_n|
+        |n| >  N0:  |omega_0^2 + i beta omega_n + K_n/M| / |omega_n^2 + P_n|
+
+    with K_n = k + i omega_n eta.  For a nonlinear law, (k, eta) is the
+    foundation's `linearization()`, and the factors are an estimate.
+
+    Parameters
+    ----------
+    system : HarmonicSystem
+    split : int
+        N0, between 0 and m.
+
+    Returns
+    -------
+    ndarray, shape (m+1,)
+    """
+    stiffness, damping = system.foundation.linearization()
+    omega = system.omega
+    foundation = (stiffness + 1j * omega * damping) / system.sleeper_mass
+    pad = system.track.pad_natural_frequency_squared + 1j * system.track.pad_damping_rate * omega
+    rail = omega**2 + system.coupling
+    low = np.abs(rail - foundation) / np.abs(pad)
+    with np.errstate(divide="ignore"):
+        high = np.abs(pad + foundation) / np.abs(rail)
+    return np.where(np.arange(system.harmonics + 1) <= split, low, high)
+
+
+def automatic_split(system: HarmonicSystem) -> int:
+    """The N0 in 0..m that minimises the largest contraction factor."""
+    worst = [contraction_factors(system, n0).max() for n0 in range(system.harmonics + 1)]
+    return int(np.argmin(worst))
+
+
+def iterate_fixed_point(
+    system: HarmonicSystem,
+    split: int,
+    max_iterations: int,
+    tol: float,
+    initial: np.ndarray | None = None,
+) -> SolverOutcome:
+    """Run eq. (21) from c = 0 (or `initial`) for at most `max_iterations` steps.
+
+    Convergence is judged by the relative residual of eq. (17),
+    ``||R(c_k)|| / ||F||``, never by the change between iterates: for a
+    factor close to one the change is small while the error is large.
+
+    Parameters
+    ----------
+    system : HarmonicSystem
+    split : int
+        N0 of eq. (21), 0 <= N0 <= m.
+    max_iterations : int
+        Number of updates k.
+    tol : float
+        Stop once the relative residual is <= tol (converged); ``tol = 0``
+        runs all k steps, as in the paper's figures.
+    initial : ndarray, optional
+        c_0..c_m to start from; zero as in the paper by default.
+    """
+    m = system.harmonics
+    low = np.arange(m + 1) <= split
+    omega = system.omega
+    pad = system.track.pad_natural_frequency_squared + 1j * system.track.pad_damping_rate * omega
+    rail = omega**2 + system.coupling
+    load = system.load
+    c = np.zeros(m + 1, dtype=complex) if initial is None else np.array(initial, dtype=complex)
+    history, harmonic_residuals = [], []
+    converged, steps = False, 0
+    for steps in range(max_iterations + 1):
+        nonlinear = nonlinear_coefficients(system, c)
+        current = system.operator * c + nonlinear + load
+        history.append(residual_norm(system, current))
+        harmonic_residuals.append(np.abs(current))
+        if not np.all(np.isfinite(current)):
+            break
+        if history[-1] <= tol:
+            converged = True
+            break
+        if steps == max_iterations:
+            break
+        c = np.where(
+            low,
+            (rail * c - load - nonlinear) / pad,
+            (pad * c + load + nonlinear) / rail,
+        )
+        c[0] = c[0].real  # w is real; guards against round-off in Im c_0
+    if converged:
+        message = f"relative residual {history[-1]:.2e} <= tol {tol:.1e} after {steps} iterations"
+    else:
+        message = (
+            f"not converged: relative residual {history[-1]:.2e} > tol {tol:.1e} "
+            f"after {steps} iterations"
+        )
+    return SolverOutcome(
+        c, converged, steps, np.array(history), message, np.array(harmonic_residuals[-20:])
+    )

@@ -1,0 +1,266 @@
+"""Section 3: the harmonic-balance equations (17)–(20) and their Jacobian.
+
+Truncated to m harmonics (eq. 19), the sleeper's equation (15) becomes, for
+n = 0..m,
+
+    R_n(c) = (omega_0^2 + i beta omega_n - omega_n^2 - P_n) c_n + G_n(c) + F_n = 0,   (17)
+
+where G_n is harmonic n of g(w, w') = f(w, w') / M (eq. 20).  G_n is
+evaluated by alternating frequency/time (AFT): w and w' are synthesised on
+a uniform grid of N samples over one period by an inverse FFT, f is
+evaluated pointwise, and an FFT returns its harmonics.
+
+This module only evaluates R and its Jacobian; `railtrack.fixed_point` and
+`railtrack.newton` drive them to zero.  Since w is real, c_{-n} = conj(c_n):
+only n = 0..m are stored ("one-sided" arrays), and the Jacobian is taken
+with respect to the 2m + 1 real unknowns ``[Re c_0, Re c_1..m, Im c_1..m]``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from .foundations import Foundation, as_foundation
+from .sleeper import rail_coupling, sleeper_operator
+from .track import Track
+from .train import load_coefficients
+
+__all__ = [
+    "HarmonicSystem",
+    "harmonic_system",
+    "default_samples",
+    "synthesize",
+    "nonlinear_coefficients",
+    "residual",
+    "residual_norm",
+    "residual_jacobian",
+    "to_real",
+    "from_real",
+    "two_sided",
+]
+
+
+def default_samples(harmonics: int) -> int:
+    """Number N of time samples per period used by the AFT.
+
+    The smallest power of two >= 16 (m + 1), at least 64.  A polynomial law
+    of degree p has harmonics up to p m, which alias onto |n| <= m only if
+    N <= (p + 1) m, so N > 4m is exact for the cubic law of eq. (25).  A
+    law with a kink (eq. 24) has harmonics decaying like n^-2, so the
+    aliasing error of harmonic n <= m is of order (m / N)^2 relative to the
+    harmonic itself; N = 16 (m + 1) keeps it below 1/256 of the truncation
+    error of dropping harmonics above m.
+    """
+    return max(64, 1 << int(np.ceil(np.log2(16 * (harmonics + 1)))))
+
+
+@lru_cache(maxsize=32)
+def _angles(harmonics: int, samples: int) -> tuple[np.ndarray, np.ndarray]:
+    n = np.arange(1, harmonics + 1)
+    theta = 2.0 * np.pi * np.outer(np.arange(samples), n) / samples
+    return np.cos(theta), np.sin(theta)
+
+
+@dataclass(frozen=True, eq=False)
+class HarmonicSystem:
+    """Everything eq. (17) needs for one track, foundation and truncation.
+
+    Attributes
+    ----------
+    track : Track
+    foundation : Foundation
+    harmonics : int
+        m, the highest harmonic kept (eq. 19).
+    samples : int
+        N, time samples per period for the AFT.
+    omega : ndarray, shape (m+1,)
+        omega_n, n = 0..m [rad/s].
+    coupling : ndarray, shape (m+1,)
+        P_n of eq. (16) [1/s^2].
+    load : ndarray, shape (m+1,)
+        F_n of eq. (16) [m/s^2].
+    operator : ndarray, shape (m+1,)
+        omega_0^2 + i beta omega_n - omega_n^2 - P_n [1/s^2].
+    """
+
+    track: Track
+    foundation: Foundation
+    harmonics: int
+    samples: int
+    omega: np.ndarray
+    coupling: np.ndarray
+    load: np.ndarray
+    operator: np.ndarray
+
+    @property
+    def sleeper_mass(self) -> float:
+        return self.track.sleeper_mass
+
+    def load_norm(self) -> float:
+        """Two-sided norm of F_n, the scale of the residual [m/s^2]."""
+        return float(np.sqrt(abs(self.load[0]) ** 2 + 2 * np.sum(np.abs(self.load[1:]) ** 2)))
+
+
+def harmonic_system(
+    track: Track, foundation, harmonics: int, samples: int | None = None
+) -> HarmonicSystem:
+    """Precompute the coefficients of eq. (17) for n = 0..m.
+
+    Parameters
+    ----------
+    track : Track
+        Scalar-valued track.
+    foundation : Foundation or callable
+        The law f(w, w'); a callable ``f(w, v)`` is wrapped.
+    harmonics : int
+        m >= 1.
+    samples : int, optional
+        AFT samples per period, > 2m; default `default_samples`.
+
+    Raises
+    ------
+    ValueError
+        If `harmonics` or `samples` is out of range.
+    """
+    if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) or harmonics < 1:
+        raise ValueError(f"harmonics must be an integer >= 1; got {harmonics!r}")
+    harmonics = int(harmonics)
+    if samples is None:
+        samples = default_samples(harmonics)
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples <= 2 * harmonics:
+        raise ValueError(
+            f"samples must be an integer > 2 * harmonics = {2 * harmonics}; got {samples!r}"
+        )
+    omega = track.fundamental_frequency * np.arange(harmonics + 1)
+    coupling = rail_coupling(track, omega)
+    return HarmonicSystem(
+        track=track,
+        foundation=as_foundation(foundation),
+        harmonics=harmonics,
+        samples=int(samples),
+        omega=omega,
+        coupling=coupling,
+        load=load_coefficients(track, omega),
+        operator=sleeper_operator(track, omega) - coupling,
+    )
+
+
+def synthesize(system: HarmonicSystem, coefficients: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """w(t_j) and w'(t_j) on t_j = j T / N, j = 0..N-1, from c_0..c_m (eqs. 18, 19)."""
+    spectrum = np.zeros(system.samples // 2 + 1, dtype=complex)
+    spectrum[: system.harmonics + 1] = coefficients * system.samples
+    w = np.fft.irfft(spectrum, system.samples)
+    spectrum[: system.harmonics + 1] *= 1j * system.omega
+    return w, np.fft.irfft(spectrum, system.samples)
+
+
+def _checked_force(system: HarmonicSystem, w: np.ndarray, v: np.ndarray) -> np.ndarray:
+    force = np.asarray(system.foundation.force(w, v), dtype=float)
+    if force.shape != w.shape:
+        force = np.broadcast_to(force, w.shape)
+    if not np.all(np.isfinite(force)):
+        bad = int(np.flatnonzero(~np.isfinite(force))[0])
+        raise ValueError(
+            f"the foundation law returned a non-finite force {force[bad]!r} at "
+            f"w = {w[bad]!r} m, w' = {v[bad]!r} m/s"
+        )
+    return force
+
+
+def nonlinear_coefficients(system: HarmonicSystem, coefficients: np.ndarray) -> np.ndarray:
+    """G_n = (1/T) int g(w, w') e^{-i omega_n t} dt for n = 0..m by AFT, eq. (20) [m/s^2].
+
+    Parameters
+    ----------
+    system : HarmonicSystem
+    coefficients : ndarray, shape (m+1,)
+        c_0..c_m [m].
+
+    Returns
+    -------
+    ndarray, shape (m+1,)
+        The harmonics of f(w, w') / M, exact up to aliasing (see `default_samples`).
+    """
+    w, v = synthesize(system, coefficients)
+    force = _checked_force(system, w, v)
+    spectrum = np.fft.rfft(force)[: system.harmonics + 1]
+    return spectrum / (system.samples * system.sleeper_mass)
+
+
+def residual(system: HarmonicSystem, coefficients: np.ndarray) -> np.ndarray:
+    """R_n(c) of eq. (17) for n = 0..m [m/s^2]; zero at a solution."""
+    coefficients = np.asarray(coefficients, dtype=complex)
+    return (
+        system.operator * coefficients
+        + nonlinear_coefficients(system, coefficients)
+        + system.load
+    )
+
+
+def residual_norm(system: HarmonicSystem, values: np.ndarray) -> float:
+    """Two-sided norm of R_n relative to that of F_n (the relative residual)."""
+    values = np.asarray(values)
+    norm = np.sqrt(abs(values[0]) ** 2 + 2 * np.sum(np.abs(values[1:]) ** 2))
+    return float(norm / system.load_norm())
+
+
+def to_real(coefficients: np.ndarray) -> np.ndarray:
+    """Pack c_0..c_m into ``[Re c_0, Re c_1..m, Im c_1..m]``."""
+    coefficients = np.asarray(coefficients, dtype=complex)
+    return np.concatenate([coefficients.real, coefficients[1:].imag])
+
+
+def from_real(x: np.ndarray) -> np.ndarray:
+    """Inverse of `to_real`."""
+    m = (len(x) - 1) // 2
+    coefficients = np.asarray(x[: m + 1], dtype=complex)
+    coefficients[1:] += 1j * x[m + 1 :]
+    return coefficients
+
+
+def two_sided(coefficients: np.ndarray) -> np.ndarray:
+    """c_{-m}..c_m from c_0..c_m, using c_{-n} = conj(c_n) (along the last axis)."""
+    coefficients = np.asarray(coefficients)
+    return np.concatenate([np.conj(coefficients[..., :0:-1]), coefficients], axis=-1)
+
+
+def residual_jacobian(system: HarmonicSystem, coefficients: np.ndarray) -> np.ndarray:
+    """Jacobian of `to_real(residual)` with respect to `to_real(c)`, shape (2m+1, 2m+1).
+
+    The linear part is diagonal in n.  The AFT part is
+    ``Proj @ (diag(df/dw) B_w + diag(df/dw') B_v) / M``, where B_w, B_v map
+    the real unknowns to the samples of w and w', and Proj maps samples to
+    the real and imaginary parts of their harmonics: the derivative of eq. (20)
+    carried through the same inverse DFT and DFT.  For a law with a kink the
+    one-sided tangent is used, which makes this a generalised (semismooth)
+    Jacobian.
+    """
+    m, samples = system.harmonics, system.samples
+    cos, sin = _angles(m, samples)
+    w, v = synthesize(system, coefficients)
+    _checked_force(system, w, v)
+    stiffness, damping = system.foundation.tangent(w, v)
+    stiffness = np.broadcast_to(np.asarray(stiffness, dtype=float), w.shape)
+    damping = np.broadcast_to(np.asarray(damping, dtype=float), w.shape)
+    omega = system.omega[1:]
+    # d w_j / d x and d w'_j / d x, weighted by the tangent, summed: N x (2m+1)
+    columns = np.empty((samples, 2 * m + 1))
+    columns[:, 0] = stiffness
+    columns[:, 1 : m + 1] = 2 * (stiffness[:, None] * cos - damping[:, None] * omega * sin)
+    columns[:, m + 1 :] = -2 * (stiffness[:, None] * sin + damping[:, None] * omega * cos)
+    scale = 1.0 / (samples * system.sleeper_mass)
+    jacobian = np.empty((2 * m + 1, 2 * m + 1))
+    jacobian[0] = columns.sum(axis=0) * scale
+    jacobian[1 : m + 1] = cos.T @ columns * scale
+    jacobian[m + 1 :] = -(sin.T @ columns) * scale
+    op = system.operator
+    jacobian[0, 0] += op[0].real
+    index = np.arange(1, m + 1)
+    jacobian[index, index] += op[1:].real
+    jacobian[index, index + m] -= op[1:].imag
+    jacobian[index + m, index] += op[1:].imag
+    jacobian[index + m, index + m] += op[1:].real
+    return jacobian

@@ -1,0 +1,85 @@
+"""Section 4.1: the analytic solution for a linear foundation, eqs. (22)–(23).
+
+For f = k2 w + eta2 w' the AFT term of eq. (17) is exactly
+``(k2 + i eta2 omega_n) c_n / M``, and each harmonic decouples:
+
+    c_n = F_n / (omega_n^2 + P_n - omega_0^2 - i beta omega_n - (k2 + i eta2 omega_n)/M).   (23)
+
+Every function here is elementwise, so a batch of tracks (array-valued
+fields with a trailing axis of length one) is solved in one call: that is
+the fast path for parameter sweeps.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from .foundations import LinearFoundation
+from .sleeper import rail_coupling, sleeper_operator
+from .track import Track
+from .train import load_coefficients
+
+__all__ = ["analytic_coefficients", "sweep_speeds"]
+
+
+def analytic_coefficients(
+    track: Track, foundation: LinearFoundation, harmonics: int
+) -> np.ndarray:
+    """Sleeper coefficients c_n, n = -m..m, of eq. (23) [m].
+
+    Parameters
+    ----------
+    track : Track
+        Scalar or batched (fields of shape ``(..., 1)``).
+    foundation : LinearFoundation
+        The law of eq. (22).
+    harmonics : int
+        m >= 1.
+
+    Returns
+    -------
+    ndarray, shape (..., 2m+1)
+        Complex c_n, harmonic axis last.
+
+    Examples
+    --------
+    >>> from railtrack import Track, LinearFoundation
+    >>> c = analytic_coefficients(Track.paper(), LinearFoundation.paper(), 15)
+    >>> float(c[15].real)          # the mean, -2 Q L / (H k2)
+    -0.00025
+    """
+    if not isinstance(foundation, LinearFoundation):
+        raise TypeError(
+            "the analytic solution (eq. 23) needs a LinearFoundation; got "
+            f"{type(foundation).__name__}; use method='newton' for other laws"
+        )
+    if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) or harmonics < 1:
+        raise ValueError(f"harmonics must be an integer >= 1; got {harmonics!r}")
+    omega = track.harmonic_frequencies(int(harmonics))
+    law = (foundation.stiffness + 1j * foundation.damping * omega) / track.sleeper_mass
+    denominator = rail_coupling(track, omega) - sleeper_operator(track, omega) - law
+    return load_coefficients(track, omega) / denominator
+
+
+def sweep_speeds(
+    track: Track, foundation: LinearFoundation, speeds: ArrayLike, harmonics: int = 15
+) -> np.ndarray:
+    """Eq. (23) for many train speeds at once.
+
+    Parameters
+    ----------
+    track : Track
+        The track; its own speed is ignored.
+    foundation : LinearFoundation
+    speeds : array_like, shape (S,)
+        Train speeds [m/s], all > 0.
+    harmonics : int
+
+    Returns
+    -------
+    ndarray, shape (S, 2m+1)
+        c_n for each speed [m].  The period T = H / v differs between rows.
+    """
+    speeds = np.asarray(speeds, dtype=float).reshape(-1, 1)
+    return analytic_coefficients(track.replace(speed=speeds), foundation, harmonics)

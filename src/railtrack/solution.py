@@ -1,0 +1,141 @@
+"""The result of a solve: Fourier coefficients and the time histories they define."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from .sleeper import rail_coefficients
+from .track import Track
+from .train import load_coefficients
+
+__all__ = ["Solution", "ConvergenceError", "fourier_series"]
+
+
+def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) -> np.ndarray:
+    """Real sum_n c_n exp(i omega_n t) over a two-sided set, eq. (12), for any shape of t."""
+    t = np.asarray(t, dtype=float)
+    phases = np.exp(1j * np.multiply.outer(t, omega))
+    return (phases @ coefficients).real
+
+
+class ConvergenceError(RuntimeError):
+    """Raised by ``solve(..., strict=True)`` when the iteration did not converge.
+
+    Attributes
+    ----------
+    solution : Solution
+        The unconverged result.
+    slow_harmonics : list of int
+        Harmonics whose residual shrank by less than 10 % per step, or grew.
+    """
+
+    def __init__(self, message: str, solution: "Solution", slow_harmonics: list[int]):
+        super().__init__(message)
+        self.solution = solution
+        self.slow_harmonics = slow_harmonics
+
+
+@dataclass(frozen=True, eq=False)
+class Solution:
+    """Periodic steady response of the sleeper (eq. 12) found by `railtrack.solve`.
+
+    Attributes
+    ----------
+    track : Track
+    foundation : object
+        The foundation law that was solved for.
+    harmonics : int
+        m, the highest harmonic kept.
+    coefficients : ndarray, shape (2m+1,)
+        Complex c_n of the sleeper displacement for n = -m..m [m].
+    method : str
+        "newton", "fixed-point" or "analytic".
+    converged : bool
+        Whether the relative residual of eq. (17) reached the tolerance.
+    iterations : int
+        Steps taken (0 for "analytic").
+    residual_history : ndarray
+        Relative residual ||R|| / ||F|| of eq. (17) at each iterate.
+    message : str
+        How the solve ended, in words.
+    split : int or None
+        N0 used by the fixed point, eq. (21).
+    samples : int or None
+        AFT samples per period.
+    """
+
+    track: Track
+    foundation: Any
+    harmonics: int
+    coefficients: np.ndarray
+    method: str
+    converged: bool
+    iterations: int
+    residual_history: np.ndarray
+    message: str
+    split: int | None = None
+    samples: int | None = None
+
+    @property
+    def residual(self) -> float:
+        """Final relative residual of eq. (17)."""
+        return float(self.residual_history[-1])
+
+    @property
+    def harmonic_numbers(self) -> np.ndarray:
+        """n = -m..m."""
+        return np.arange(-self.harmonics, self.harmonics + 1)
+
+    @property
+    def frequencies(self) -> np.ndarray:
+        """omega_n for n = -m..m [rad/s], eq. (11)."""
+        return self.track.harmonic_frequencies(self.harmonics)
+
+    @property
+    def period(self) -> float:
+        """T = H / v [s]."""
+        return self.track.period
+
+    @property
+    def mean_displacement(self) -> float:
+        """c_0, the mean sleeper displacement [m]."""
+        return float(self.coefficients[self.harmonics].real)
+
+    def sleeper_displacement(self, t: ArrayLike) -> np.ndarray:
+        """Sleeper displacement w(t) [m], eq. (19); t in seconds, any shape.
+
+        w is positive upward; t = 0 when a front wheel is above the sleeper.
+        """
+        return fourier_series(self.coefficients, self.frequencies, t)
+
+    def sleeper_velocity(self, t: ArrayLike) -> np.ndarray:
+        """Sleeper velocity w'(t) [m/s], eq. (18)."""
+        omega = self.frequencies
+        return fourier_series(1j * omega * self.coefficients, omega, t)
+
+    def rail_coefficients(self) -> np.ndarray:
+        """Fourier coefficients of the rail displacement above the sleeper, eq. (6) [m]."""
+        omega = self.frequencies
+        return rail_coefficients(
+            self.track, omega, self.coefficients, load_coefficients(self.track, omega)
+        )
+
+    def rail_displacement(self, t: ArrayLike) -> np.ndarray:
+        """Rail displacement above the sleeper w_r(0, t) [m], eq. (6)."""
+        return fourier_series(self.rail_coefficients(), self.frequencies, t)
+
+    def foundation_force(self, t: ArrayLike) -> np.ndarray:
+        """Force f(w, w') on the foundation [N] (positive when the foundation is stretched)."""
+        return np.asarray(
+            self.foundation.force(self.sleeper_displacement(t), self.sleeper_velocity(t)),
+            dtype=float,
+        )
+
+    def one_period(self, samples: int = 400) -> tuple[np.ndarray, np.ndarray]:
+        """Times over [0, T) and w at those times, handy for plotting [s], [m]."""
+        t = np.linspace(0.0, self.period, samples, endpoint=False)
+        return t, self.sleeper_displacement(t)
