@@ -180,13 +180,13 @@ class CubicFoundation:
         return (
             self.damping * np.asarray(v)
             + self.stiffness * w
-            + self.epsilon * self.cubic_stiffness * w**3
+            + self.epsilon * self.cubic_stiffness * w * w * w
         )
 
     def tangent(self, w, v):
         w = np.asarray(w)
         shape = np.broadcast(w, np.asarray(v)).shape
-        stiffness = self.stiffness + 3.0 * self.epsilon * self.cubic_stiffness * w**2
+        stiffness = self.stiffness + 3.0 * self.epsilon * self.cubic_stiffness * w * w
         return np.broadcast_to(stiffness, shape), np.full(shape, float(self.damping))
 
     def linearization(self) -> tuple[float, float]:

@@ -24,7 +24,7 @@ from functools import lru_cache
 import numpy as np
 
 from .foundations import Foundation, as_foundation
-from .sleeper import rail_coupling, sleeper_operator
+from .sleeper import coupling_and_transfer, sleeper_operator
 from .track import Track
 from .train import load_coefficients
 
@@ -55,13 +55,6 @@ def default_samples(harmonics: int) -> int:
     error of dropping harmonics above m.
     """
     return max(64, 1 << int(np.ceil(np.log2(16 * (harmonics + 1)))))
-
-
-@lru_cache(maxsize=32)
-def _angles(harmonics: int, samples: int) -> tuple[np.ndarray, np.ndarray]:
-    n = np.arange(1, harmonics + 1)
-    theta = 2.0 * np.pi * np.outer(np.arange(samples), n) / samples
-    return np.cos(theta), np.sin(theta)
 
 
 @dataclass(frozen=True, eq=False)
@@ -99,6 +92,11 @@ class HarmonicSystem:
     def sleeper_mass(self) -> float:
         return self.track.sleeper_mass
 
+    @property
+    def fundamental(self) -> float:
+        """omega_1 = 2 pi v / H [rad/s]."""
+        return self.track.fundamental_frequency
+
     def load_norm(self) -> float:
         """Two-sided norm of F_n, the scale of the residual [m/s^2]."""
         return float(np.sqrt(abs(self.load[0]) ** 2 + 2 * np.sum(np.abs(self.load[1:]) ** 2)))
@@ -135,7 +133,7 @@ def harmonic_system(
             f"samples must be an integer > 2 * harmonics = {2 * harmonics}; got {samples!r}"
         )
     omega = track.fundamental_frequency * np.arange(harmonics + 1)
-    coupling = rail_coupling(track, omega)
+    coupling, transfer = coupling_and_transfer(track, omega)
     return HarmonicSystem(
         track=track,
         foundation=as_foundation(foundation),
@@ -143,18 +141,18 @@ def harmonic_system(
         samples=int(samples),
         omega=omega,
         coupling=coupling,
-        load=load_coefficients(track, omega),
+        load=load_coefficients(track, omega, transfer),
         operator=sleeper_operator(track, omega) - coupling,
     )
 
 
 def synthesize(system: HarmonicSystem, coefficients: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """w(t_j) and w'(t_j) on t_j = j T / N, j = 0..N-1, from c_0..c_m (eqs. 18, 19)."""
-    spectrum = np.zeros(system.samples // 2 + 1, dtype=complex)
-    spectrum[: system.harmonics + 1] = coefficients * system.samples
-    w = np.fft.irfft(spectrum, system.samples)
-    spectrum[: system.harmonics + 1] *= 1j * system.omega
-    return w, np.fft.irfft(spectrum, system.samples)
+    spectrum = np.zeros((2, system.samples // 2 + 1), dtype=complex)
+    spectrum[0, : system.harmonics + 1] = coefficients * system.samples
+    spectrum[1, : system.harmonics + 1] = spectrum[0, : system.harmonics + 1] * 1j * system.omega
+    w, v = np.fft.irfft(spectrum, system.samples)
+    return w, v
 
 
 def _checked_force(system: HarmonicSystem, w: np.ndarray, v: np.ndarray) -> np.ndarray:
@@ -230,37 +228,46 @@ def two_sided(coefficients: np.ndarray) -> np.ndarray:
 def residual_jacobian(system: HarmonicSystem, coefficients: np.ndarray) -> np.ndarray:
     """Jacobian of `to_real(residual)` with respect to `to_real(c)`, shape (2m+1, 2m+1).
 
-    The linear part is diagonal in n.  The AFT part is
-    ``Proj @ (diag(df/dw) B_w + diag(df/dw') B_v) / M``, where B_w, B_v map
-    the real unknowns to the samples of w and w', and Proj maps samples to
-    the real and imaginary parts of their harmonics: the derivative of eq. (20)
-    carried through the same inverse DFT and DFT.  For a law with a kink the
+    Linearising g about w(t) gives ``dg = k(t) dw + d(t) dw'`` with the
+    foundation's tangent stiffness k and damping d divided by M.  Their
+    harmonics K_j, D_j (|j| <= 2m, by the same N-point DFT as the AFT) give
+
+        dG_n / dc_k = K_{n-k} + i omega_k D_{n-k},   n, k = -m..m,
+
+    the exact derivative of eq. (20) as evaluated by AFT.  With
+    ``c_{-k} = conj(c_k)`` this becomes a real (2m+1) x (2m+1) matrix; the
+    linear part of eq. (17) is diagonal in n.  For a law with a kink the
     one-sided tangent is used, which makes this a generalised (semismooth)
     Jacobian.
     """
-    m, samples = system.harmonics, system.samples
-    cos, sin = _angles(m, samples)
+    m = system.harmonics
     w, v = synthesize(system, coefficients)
     _checked_force(system, w, v)
     stiffness, damping = system.foundation.tangent(w, v)
-    stiffness = np.broadcast_to(np.asarray(stiffness, dtype=float), w.shape)
-    damping = np.broadcast_to(np.asarray(damping, dtype=float), w.shape)
-    omega = system.omega[1:]
-    # d w_j / d x and d w'_j / d x, weighted by the tangent, summed: N x (2m+1)
-    columns = np.empty((samples, 2 * m + 1))
-    columns[:, 0] = stiffness
-    columns[:, 1 : m + 1] = 2 * (stiffness[:, None] * cos - damping[:, None] * omega * sin)
-    columns[:, m + 1 :] = -2 * (stiffness[:, None] * sin + damping[:, None] * omega * cos)
-    scale = 1.0 / (samples * system.sleeper_mass)
+    tangent = np.empty((2, system.samples))
+    tangent[0], tangent[1] = stiffness, damping
+    spectrum = np.fft.rfft(tangent)[:, : 2 * m + 1] / (system.samples * system.sleeper_mass)
+    # two-sided harmonics j = -2m..2m, stored at index j + 2m
+    full = np.concatenate([np.conj(spectrum[:, :0:-1]), spectrum], axis=1)
+    lag = _lags(m)  # (n - k) + 2m for n = 0..m, k = -m..m
+    omega_k = system.fundamental * np.arange(-m, m + 1)
+    block = full[0][lag] + 1j * omega_k * full[1][lag]  # dG_n / dc_k, (m+1, 2m+1)
+    positive, negative = block[:, m + 1 :], block[:, m - 1 :: -1]
+    by_real = np.concatenate([block[:, m : m + 1], positive + negative], axis=1)
+    by_imag = 1j * (positive - negative)
+    index = np.arange(m + 1)
+    by_real[index, index] += system.operator
+    by_imag[index[1:], index[1:] - 1] += 1j * system.operator[1:]
     jacobian = np.empty((2 * m + 1, 2 * m + 1))
-    jacobian[0] = columns.sum(axis=0) * scale
-    jacobian[1 : m + 1] = cos.T @ columns * scale
-    jacobian[m + 1 :] = -(sin.T @ columns) * scale
-    op = system.operator
-    jacobian[0, 0] += op[0].real
-    index = np.arange(1, m + 1)
-    jacobian[index, index] += op[1:].real
-    jacobian[index, index + m] -= op[1:].imag
-    jacobian[index + m, index] += op[1:].imag
-    jacobian[index + m, index + m] += op[1:].real
+    jacobian[: m + 1, : m + 1] = by_real.real
+    jacobian[: m + 1, m + 1 :] = by_imag.real
+    jacobian[m + 1 :, : m + 1] = by_real[1:].imag
+    jacobian[m + 1 :, m + 1 :] = by_imag[1:].imag
     return jacobian
+
+
+@lru_cache(maxsize=32)
+def _lags(harmonics: int) -> np.ndarray:
+    n = np.arange(harmonics + 1)[:, None]
+    k = np.arange(-harmonics, harmonics + 1)[None, :]
+    return n - k + 2 * harmonics

@@ -12,7 +12,6 @@ norm keeps it robust far from the solution.
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg
 
 from .fixed_point import SolverOutcome
 from .harmonic_balance import (
@@ -70,8 +69,10 @@ def iterate_newton(
         steps += 1
         jacobian = residual_jacobian(system, c)
         try:
-            step = from_real(scipy.linalg.solve(jacobian, -to_real(current), check_finite=True))
-        except (scipy.linalg.LinAlgError, ValueError) as error:
+            if not np.all(np.isfinite(jacobian)):
+                raise ValueError("non-finite Jacobian")
+            step = from_real(np.linalg.solve(jacobian, -to_real(current)))
+        except (np.linalg.LinAlgError, ValueError) as error:
             message = f"Newton step failed at iteration {steps}: {error}"
             break
         step[0] = step[0].real

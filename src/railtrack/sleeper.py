@@ -25,6 +25,7 @@ __all__ = [
     "pad_stiffness",
     "load_transfer",
     "rail_coupling",
+    "coupling_and_transfer",
     "sleeper_operator",
     "rail_coefficients",
 ]
@@ -91,6 +92,17 @@ def rail_coupling(track: Track, omega: ArrayLike) -> np.ndarray:
     omega = np.asarray(omega, dtype=float)
     factors, stiffness, combined = _pad_rail_denominator(track, omega)
     return stiffness**2 * factors.numerator / (track.sleeper_mass * combined)
+
+
+def coupling_and_transfer(track: Track, omega: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """`rail_coupling` and `load_transfer` together, sharing the work of eq. (3)."""
+    omega = np.asarray(omega, dtype=float)
+    factors, stiffness, combined = _pad_rail_denominator(track, omega)
+    coupling = stiffness**2 * factors.numerator / (track.sleeper_mass * combined)
+    transfer = (
+        4.0 * track.rail_bending_stiffness * track.sleeper_spacing * factors.gap / combined
+    )
+    return coupling, transfer
 
 
 def sleeper_operator(track: Track, omega: ArrayLike) -> np.ndarray:

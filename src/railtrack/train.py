@@ -53,7 +53,9 @@ def wheel_passage_times(track: Track) -> np.ndarray:
     return np.array([0.0, track.wheel_spacing / track.speed])
 
 
-def load_coefficients(track: Track, omega: ArrayLike) -> np.ndarray:
+def load_coefficients(
+    track: Track, omega: ArrayLike, transfer: np.ndarray | None = None
+) -> np.ndarray:
     """Load coefficients F(omega) = Q (1 + e^{-i omega D/v}) A Gamma / (M H EI), eq. (16) [m/s^2].
 
     F_n = F(omega_n) is harmonic n of the train's load on the sleeper,
@@ -66,6 +68,8 @@ def load_coefficients(track: Track, omega: ArrayLike) -> np.ndarray:
     track : Track
     omega : array_like
         Angular frequency [rad/s]; the method uses the harmonics omega_n.
+    transfer : ndarray, optional
+        Gamma(omega) if already computed (`railtrack.sleeper.coupling_and_transfer`).
 
     Returns
     -------
@@ -82,11 +86,13 @@ def load_coefficients(track: Track, omega: ArrayLike) -> np.ndarray:
     50.0
     """
     omega = np.asarray(omega, dtype=float)
+    if transfer is None:
+        transfer = load_transfer(track, omega)
     wheel_pair = 1.0 + np.exp(-1j * omega * track.wheel_spacing / track.speed)
     return (
         track.wheel_load
         * wheel_pair
         * pad_stiffness(track, omega)
-        * load_transfer(track, omega)
+        * transfer
         / (track.sleeper_mass * track.wagon_length * track.rail_bending_stiffness)
     )
