@@ -61,7 +61,7 @@ class LinearFoundation:
 
     Examples
     --------
-    >>> LinearFoundation.paper().force(-1e-3, 0.0)    # 1 mm down pushes back
+    >>> float(LinearFoundation.paper().force(-1e-3, 0.0))    # 1 mm down: the foundation pushes up
     -20000.0
     """
 
