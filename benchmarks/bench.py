@@ -1,0 +1,89 @@
+"""Speed and iteration counts of the railtrack solvers on the paper's cases.
+
+Run with ``make bench``.  Prints Markdown tables: the machine, the median
+wall time of each solve (median over several runs, each run timing a batch
+of repeated solves), and the iterations each method needs to reach a
+relative residual of 1e-10 of eq. (17).  Times are wall-clock on whatever
+else the machine is doing; the iteration counts are exact.
+"""
+
+from __future__ import annotations
+
+import os
+import platform
+import statistics
+import time
+
+import numpy as np
+import scipy
+
+import railtrack as rt
+
+HARMONICS = 15
+CASES = {
+    "linear": rt.LinearFoundation.paper(),
+    "bilinear e = 0.5": rt.BilinearFoundation.paper(0.5),
+    "bilinear e = 0 (tensionless)": rt.BilinearFoundation.paper(0.0),
+    "cubic eps = 0.8": rt.CubicFoundation.paper(0.8),
+}
+RUNS = 7
+
+
+def median_time(function, repeat: int) -> float:
+    """Median over RUNS runs of the mean time of `repeat` calls [s]."""
+    function()  # warm caches and imports
+    runs = []
+    for _ in range(RUNS):
+        start = time.perf_counter()
+        for _ in range(repeat):
+            function()
+        runs.append((time.perf_counter() - start) / repeat)
+    return statistics.median(runs)
+
+
+def machine() -> str:
+    cpu = platform.processor() or "unknown CPU"
+    try:
+        with open("/proc/cpuinfo") as info:
+            cpu = next(line.split(":", 1)[1].strip() for line in info if line.startswith("model name"))
+    except (OSError, StopIteration):
+        pass
+    return (
+        f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}, "
+        f"numpy {np.__version__}, scipy {scipy.__version__}"
+    )
+
+
+def main() -> None:
+    track = rt.Track.paper()
+    print(f"Machine: {machine()}\n")
+    print(f"m = {HARMONICS} harmonics, Table 1 track, median of {RUNS} runs.\n")
+    print("| case | Newton solve [ms] | fixed point, k = 100 [ms] "
+          "| Newton steps to 1e-10 | fixed-point iterations to 1e-10 (N0 = m) |")
+    print("|---|---:|---:|---:|---:|")
+    for name, law in CASES.items():
+        newton_time = median_time(lambda: rt.solve(track, law), 50)
+        fixed_time = median_time(
+            lambda: rt.solve(track, law, method="fixed-point", max_iterations=100, tol=0), 5
+        )
+        newton = rt.solve(track, law, tol=1e-10)
+        fixed = rt.solve(track, law, method="fixed-point", tol=1e-10, max_iterations=5000)
+        fixed_steps = str(fixed.iterations) if fixed.converged else f"> {fixed.iterations}"
+        print(f"| {name} | {newton_time * 1e3:.2f} | {fixed_time * 1e3:.2f} "
+              f"| {newton.iterations} | {fixed_steps} |")
+
+    speeds = np.linspace(10.0, 100.0, 1000)
+    linear = CASES["linear"]
+    sweep = median_time(lambda: rt.sweep_speeds(track, linear, speeds, HARMONICS), 5)
+    loop = median_time(
+        lambda: [rt.solve(track.replace(speed=s), linear, method="analytic") for s in speeds[:100]], 1
+    ) * 10
+    print()
+    print("| linear sweep over 1,000 train speeds (eq. 23) | time [ms] |")
+    print("|---|---:|")
+    print(f"| vectorised `rt.sweep_speeds` | {sweep * 1e3:.1f} |")
+    print(f"| loop of `rt.solve(..., method='analytic')` (100 timed, x10) | {loop * 1e3:.0f} |")
+
+
+if __name__ == "__main__":
+    main()
