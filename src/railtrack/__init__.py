@@ -15,6 +15,8 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.foundations`  eqs. (22), (24), (25): foundation laws
 `railtrack.linear`     Section 4.1, eq. (23): analytic linear solution
 `railtrack.solve`      the entry point `solve`
+`railtrack.fem`        finite-element ring of the same track (check)
+`railtrack.timedomain` Newmark time integration of that ring (check)
 =====================  ==============================================
 
 SI units throughout.  w is positive upward (the train pushes it negative);
@@ -39,6 +41,7 @@ from .receptance import rail_receptance, rail_receptance_lattice_sum
 from .sleeper import rail_coupling
 from .solution import ConvergenceError, Solution
 from .solve import METHODS, solve
+from .timedomain import TimeDomainSolution, simulate_time_domain
 from .track import Track
 from .train import load_coefficients
 
@@ -61,4 +64,6 @@ __all__ = [
     "rail_receptance_lattice_sum",
     "rail_coupling",
     "load_coefficients",
+    "simulate_time_domain",
+    "TimeDomainSolution",
 ]
