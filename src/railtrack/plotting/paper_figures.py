@@ -1,0 +1,184 @@
+"""Figures 3–7 of Hoang et al. (2015), recomputed with `railtrack`.
+
+Each paper figure has a data function, ``figureN_data``, that solves the
+cases the figure shows and returns them as `PanelData` (arrays in SI
+units, no plotting), and a plotting function, ``figureN``, that draws them
+and returns a `matplotlib.figure.Figure` with millimetres and seconds on
+the axes.  The defaults are the paper's parameters:
+
+* the track and train of Table 1, `Track.paper()`;
+* linear foundation k2 = 20 MN/m, eta2 = 0.2 MN s/m (eq. 22, Figure 3);
+* bilinear foundation k2+ = 20 MN/m, k2- = e k2+, e = 0.5 (eq. 24,
+  Figures 4 and 5);
+* cubic foundation k2 = 20 MN/m, k3 = 20 kN/mm^3 = 2e13 N/m^3, eps = 0.8
+  (eq. 25, Figures 6 and 7);
+* m = 15 harmonics and k = 100 iterations unless the figure varies them.
+
+The paper's curves come from its fixed-point iteration, eq. (21), run for
+exactly k steps from c = 0 (``method="fixed-point", tol=0``).  Every
+figure also carries a reference curve that has converged (Newton's method
+to a relative residual of 1e-10, or eq. 23 for the linear law), drawn
+dashed black, so that the reader sees what the iteration is tending to.
+
+Conventions: w is positive upward, so the train pushes the sleeper to
+w < 0; t = 0 when a front wheel is above the sleeper, the back wheel
+follows at D / v, and the plots show one period T = H / v.
+
+Examples
+--------
+>>> from railtrack.plotting.paper_figures import figure3_data
+>>> data = figure3_data()
+>>> data.values
+(15, 100)
+>>> bool(data.errors()[1] < 1e-7)      # k = 100 is within 0.1 um of eq. (23)
+True
+"""
+
+from __future__ import annotations
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+
+from .. import BilinearFoundation, CubicFoundation, LinearFoundation, Track
+from ..train import wheel_passage_times
+from .paper_figure_data import (
+    figure3_data,
+    figure4_data,
+    figure5_data,
+    figure6_data,
+    figure7_data,
+    harmonic_convergence_data,
+)
+from .panels import PAPER_HARMONICS, PAPER_ITERATIONS, PanelData
+from .style import MM, label_displacement_axes, new_figure
+
+__all__ = [
+    "PAPER_HARMONICS",
+    "PAPER_ITERATIONS",
+    "PanelData",
+    "figure3_data",
+    "figure4_data",
+    "figure5_data",
+    "figure6_data",
+    "figure7_data",
+    "harmonic_convergence_data",
+    "figure3",
+    "figure4",
+    "figure5",
+    "figure6",
+    "figure7",
+]
+
+_SYMBOLS = {"k": "k", "m": "m", "e": "e", "epsilon": "ε"}
+
+
+def _colours(count: int) -> list:
+    return [plt.get_cmap("viridis")(x) for x in np.linspace(0.0, 0.85, count)]
+
+
+def _mark_wheels(ax: Axes, track: Track) -> None:
+    """Dotted verticals where a wheel is above the sleeper (front at 0 and T, back at D/v)."""
+    front, back = wheel_passage_times(track)
+    for time, name in ((front, "front wheel"), (back, "back wheel"), (track.period, None)):
+        ax.axvline(time, color="0.6", linestyle=":", linewidth=0.8, zorder=0)
+        if name:
+            ax.text(time, 0.98, f"{name} ", transform=ax.get_xaxis_transform(),
+                    fontsize=7, color="0.4", rotation=90, va="top", ha="left")
+
+
+def _draw_panel(ax: Axes, data: PanelData, track: Track, *, title: str) -> None:
+    symbol = _SYMBOLS.get(data.parameter, data.parameter)
+    for colour, value, w in zip(_colours(len(data.values)), data.values, data.displacements):
+        ax.plot(data.times, w * MM, color=colour, linewidth=1.4, label=f"{symbol} = {value:g}")
+    references = np.atleast_2d(data.reference)
+    for i, w in enumerate(references):
+        ax.plot(data.times, w * MM, color="black", linestyle="--", linewidth=0.9,
+                label=f"{data.reference_label} (converged)" if i == 0 else None)
+    _mark_wheels(ax, track)
+    label_displacement_axes(ax)
+    ax.set_xlim(0.0, track.period)
+    ax.set_title(f"{title}: {data.method}", fontsize=10)
+    ax.legend(loc="lower center", bbox_to_anchor=(0.62, 0.02), fontsize=7.5, ncol=2)
+
+
+def figure3(track: Track | None = None, foundation: LinearFoundation | None = None,
+            **kwargs) -> Figure:
+    """Figure 3 of the paper: linear foundation, analytic (eq. 23) against eq. (21).
+
+    Keyword arguments are those of `figure3_data`.
+    """
+    track = Track.paper() if track is None else track
+    data = figure3_data(track, foundation, **kwargs)
+    fig, ax = new_figure()
+    ax.plot(data.times, data.reference * MM, color="0.75", linewidth=4.0,
+            label=data.reference_label)
+    colours = plt.get_cmap("tab10").colors[1:]
+    for colour, k, w in zip(colours, data.values, data.displacements):
+        ax.plot(data.times, w * MM, color=colour, linewidth=1.4,
+                label=f"fixed point, eq. (21), k = {k}")
+    ax.plot(data.times, data.extra["Newton"] * MM, color="black", linestyle="--",
+            linewidth=0.9, label="Newton (converged)")
+    _mark_wheels(ax, track)
+    label_displacement_axes(ax)
+    ax.set_xlim(0.0, track.period)
+    ax.set_title(f"Linear foundation, m = {data.solutions[0].harmonics}", fontsize=10)
+    ax.legend(loc="lower center", bbox_to_anchor=(0.62, 0.02), fontsize=8)
+    return fig
+
+
+def figure4(track: Track | None = None, foundation: BilinearFoundation | None = None,
+            **kwargs) -> Figure:
+    """Figure 4 of the paper: bilinear foundation, varying m (upper) and k (lower).
+
+    Keyword arguments are those of `figure4_data`.
+    """
+    track = Track.paper() if track is None else track
+    upper, lower = figure4_data(track, foundation, **kwargs)
+    fig, axes = new_figure(2, 1, sharex=True)
+    _draw_panel(axes[0], upper, track, title="Number of harmonics m")
+    _draw_panel(axes[1], lower, track, title="Number of iterations k")
+    axes[0].set_xlabel("")
+    return fig
+
+
+def figure5(track: Track | None = None, foundation: BilinearFoundation | None = None,
+            **kwargs) -> Figure:
+    """Figure 5 of the paper: bilinear foundation for several e = k2-/k2+.
+
+    Keyword arguments are those of `figure5_data`.
+    """
+    track = Track.paper() if track is None else track
+    data = figure5_data(track, foundation, **kwargs)
+    fig, ax = new_figure()
+    _draw_panel(ax, data, track, title=r"Ratio $e = k_2^- / k_2^+$")
+    return fig
+
+
+def figure6(track: Track | None = None, foundation: CubicFoundation | None = None,
+            **kwargs) -> Figure:
+    """Figure 6 of the paper: cubic foundation, several numbers of iterations k.
+
+    Keyword arguments are those of `figure6_data`.
+    """
+    track = Track.paper() if track is None else track
+    data = figure6_data(track, foundation, **kwargs)
+    fig, ax = new_figure()
+    _draw_panel(ax, data, track, title="Number of iterations k")
+    return fig
+
+
+def figure7(track: Track | None = None, foundation: CubicFoundation | None = None,
+            **kwargs) -> Figure:
+    """Figure 7 of the paper: cubic foundation for several eps.
+
+    Keyword arguments are those of `figure7_data`.
+    """
+    track = Track.paper() if track is None else track
+    data = figure7_data(track, foundation, **kwargs)
+    fig, ax = new_figure()
+    _draw_panel(ax, data, track, title="Nonlinearity parameter ε")
+    return fig
