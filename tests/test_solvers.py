@@ -214,3 +214,15 @@ def test_peak_is_near_the_wheels():
     t_min = t[np.argmin(solution.sleeper_displacement(t))]
     # the deepest point falls between the two wheel passages (0 and D/v), delayed by the dynamics
     assert 0.0 <= t_min <= TRACK.wheel_spacing / TRACK.speed + 0.02
+
+
+@pytest.mark.parametrize("ratio", [0.5, 0.0])
+def test_factor_from_the_solution_estimates_the_bilinear_rate_better(ratio):
+    law = BilinearFoundation.paper(ratio)
+    system = harmonic_system(TRACK, law, 15)
+    history = solve(TRACK, law, method="fixed-point", max_iterations=300, tol=0).residual_history
+    observed = (history[300] / history[200]) ** (1 / 100)  # asymptotic rate of eq. (21)
+    at_rest = contraction_factors(system, 15)[0]
+    along_solution = contraction_factors(system, 15, solve(TRACK, law).coefficients[15:])[0]
+    assert abs(along_solution - observed) < abs(at_rest - observed)
+    assert at_rest < along_solution < observed  # tension is softer: slower than k2+ predicts

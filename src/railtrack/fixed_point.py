@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .harmonic_balance import HarmonicSystem, nonlinear_coefficients, residual_norm
+from .harmonic_balance import HarmonicSystem, nonlinear_coefficients, residual_norm, synthesize
 
 __all__ = [
     "SolverOutcome",
@@ -41,7 +41,9 @@ class SolverOutcome(NamedTuple):
     harmonic_residuals: np.ndarray  # |R_n| of the last few iterates, shape (k, m+1)
 
 
-def contraction_factors(system: HarmonicSystem, split: int) -> np.ndarray:
+def contraction_factors(
+    system: HarmonicSystem, split: int, coefficients: np.ndarray | None = None
+) -> np.ndarray:
     """Factor by which eq. (21) multiplies the error of each harmonic, n = 0..m.
 
     Exact for a linear law (Section 4.1):
@@ -49,20 +51,29 @@ def contraction_factors(system: HarmonicSystem, split: int) -> np.ndarray:
         |n| <= N0:  |omega_n^2 + P_n - K_n/M| / |omega_0^2 + i beta omega_n|
         |n| >  N0:  |omega_0^2 + i beta omega_n + K_n/M| / |omega_n^2 + P_n|
 
-    with K_n = k + i omega_n eta.  For a nonlinear law, (k, eta) is the
-    foundation's `linearization()`, and the factors are an estimate.
+    with K_n = k + i omega_n eta.  For a nonlinear law the factors are an
+    estimate: (k, eta) is the foundation's `linearization()`, or, if
+    `coefficients` are given, its tangent averaged over one period of that
+    response (closer to the rate observed near a solution).
 
     Parameters
     ----------
     system : HarmonicSystem
     split : int
         N0, between 0 and m.
+    coefficients : ndarray, shape (m+1,), optional
+        c_0..c_m of a response (e.g. a converged one) to average the tangent over.
 
     Returns
     -------
     ndarray, shape (m+1,)
     """
-    stiffness, damping = system.foundation.linearization()
+    if coefficients is None:
+        stiffness, damping = system.foundation.linearization()
+    else:
+        w, v = synthesize(system, np.asarray(coefficients, dtype=complex))
+        tangent = system.foundation.tangent(w, v)
+        stiffness, damping = (float(np.mean(np.broadcast_to(x, w.shape))) for x in tangent)
     omega = system.omega
     foundation = (stiffness + 1j * omega * damping) / system.sleeper_mass
     pad = system.track.pad_natural_frequency_squared + 1j * system.track.pad_damping_rate * omega
