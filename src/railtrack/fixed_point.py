@@ -60,7 +60,8 @@ def contraction_factors(
     ----------
     system : HarmonicSystem
     split : int
-        N0, between 0 and m.
+        N0, between -1 and m; -1 puts every harmonic, the mean included, in
+        the second branch.
     coefficients : ndarray, shape (m+1,), optional
         c_0..c_m of a response (e.g. a converged one) to average the tangent over.
 
