@@ -32,6 +32,8 @@ __all__ = [
     "rail_receptance",
     "rail_receptance_lattice_sum",
     "moving_load_receptance",
+    "critical_frequency",
+    "receptance_pole_frequencies",
     "receptance_factors",
     "ReceptanceFactors",
 ]
@@ -223,3 +225,38 @@ def moving_load_receptance(track: Track, omega: ArrayLike) -> np.ndarray:
         return 1.0 / (
             track.speed * track.rail_bending_stiffness * ((omega / track.speed) ** 4 - kb**4)
         )
+
+
+def critical_frequency(track: Track) -> float:
+    """omega* = v^2 sqrt(rho S / EI), where omega / v equals k_b [rad/s]."""
+    return float(track.speed**2 * np.sqrt(track.rail_linear_mass / track.rail_bending_stiffness))
+
+
+def receptance_pole_frequencies(track: Track, omega_max: float) -> np.ndarray:
+    """Frequencies 0 < omega <= omega_max where cos(k_b L) = cos(omega L / v) [rad/s].
+
+    There eta_E of eq. (3) is infinite: a free bending wave of the rail
+    (wavenumber k_b) matches a spatial harmonic omega/v + 2 pi j / L of the
+    sleeper forces.  With s = sqrt(omega) and c = (rho S/EI)^(1/4) the
+    conditions ``omega L / v - 2 pi m = -+ k_b L`` are quadratics in s:
+    ``s = v [+-c + sqrt(c^2 + 8 pi m / (v L))] / 2``, m = 0, 1, 2, ...
+    (m = 0 with the + sign is omega* of `critical_frequency`).
+
+    Returns
+    -------
+    ndarray
+        Sorted pole frequencies (omega = 0 itself is not listed).
+    """
+    c = (track.rail_linear_mass / track.rail_bending_stiffness) ** 0.25
+    v, span = track.speed, track.sleeper_spacing
+    poles = [critical_frequency(track)]
+    m = 1
+    while True:
+        root = np.sqrt(c * c + 8.0 * np.pi * m / (v * span))
+        pair = [(0.5 * v * (sign * c + root)) ** 2 for sign in (-1.0, 1.0)]
+        if min(pair) > omega_max:
+            break
+        poles += pair
+        m += 1
+    poles = np.sort(np.array(poles))
+    return poles[poles <= omega_max]

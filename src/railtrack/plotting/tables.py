@@ -1,0 +1,182 @@
+"""Markdown tables of the model's parameters: Table 1, the foundations, notation.
+
+Built from the library's parameter objects, so the book's tables always show
+the values the solver uses.  Values are shown in engineering units (MN/m,
+kN, ...); the objects hold SI.
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+
+from ..foundations import BilinearFoundation, CubicFoundation, LinearFoundation
+from ..receptance import critical_frequency
+from ..track import Track
+
+__all__ = [
+    "markdown_table",
+    "table1_rows",
+    "table1",
+    "foundation_rows",
+    "foundation_table",
+    "derived_table",
+    "notation_table",
+]
+
+
+def markdown_table(header: Sequence[str], rows: Sequence[Sequence[object]]) -> str:
+    """A GitHub/MyST markdown table from a header and rows of printable cells.
+
+    >>> print(markdown_table(["a", "b"], [[1, 2]]))
+    | a | b |
+    |---|---|
+    | 1 | 2 |
+    """
+    lines = ["| " + " | ".join(str(h) for h in header) + " |"]
+    lines.append("|" + "|".join("---" for _ in header) + "|")
+    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+# (quantity, symbol, Track field, display unit, SI value of one display unit)
+_TABLE1 = (
+    ("Rail mass per length", r"$\rho S$", "rail_linear_mass", "kg/m", 1.0),
+    ("Rail bending stiffness", r"$EI$", "rail_bending_stiffness", "MN·m²", 1e6),
+    ("Train speed", r"$v$", "speed", "m/s", 1.0),
+    ("Load of one wheel", r"$Q$", "wheel_load", "kN", 1e3),
+    ("Sleeper (block) mass", r"$M$", "sleeper_mass", "kg", 1.0),
+    ("Sleeper spacing", r"$L$", "sleeper_spacing", "m", 1.0),
+    ("Wheel spacing in a wagon (bogie)", r"$D$", "wheel_spacing", "m", 1.0),
+    ("Wagon length", r"$H$", "wagon_length", "m", 1.0),
+    ("Pad stiffness", r"$k_1$", "pad_stiffness", "MN/m", 1e6),
+    ("Pad damping", r"$\eta_1$", "pad_damping", "MN·s/m", 1e6),
+)
+
+
+def table1_rows(track: Track) -> list[dict]:
+    """Rows of Table 1 of the paper, read from `track`.
+
+    Parameters
+    ----------
+    track : Track
+        Usually ``Track.paper()``.
+
+    Returns
+    -------
+    list of dict
+        One dict per parameter with keys ``quantity``, ``symbol`` (LaTeX),
+        ``field`` (the `Track` attribute), ``value`` (in ``unit``), ``unit``
+        (engineering unit, e.g. "MN/m") and ``scale`` (SI value of one
+        ``unit``), so that ``value * scale == getattr(track, field)``.
+    """
+    rows = []
+    for quantity, symbol, field, unit, scale in _TABLE1:
+        si = float(getattr(track, field))
+        rows.append(dict(quantity=quantity, symbol=symbol, field=field,
+                         value=si / scale, unit=unit, scale=scale))
+    return rows
+
+
+def table1(track: Track) -> str:
+    """Table 1 of the paper as a markdown table (quantity, symbol, value, unit).
+
+    Parameters
+    ----------
+    track : Track
+
+    Returns
+    -------
+    str
+        Markdown; show it with ``IPython.display.Markdown``.
+    """
+    rows = [(r["quantity"], r["symbol"], f"{r['value']:g}", r["unit"]) for r in table1_rows(track)]
+    return markdown_table(["Quantity", "Symbol", "Value", "Unit"], rows)
+
+
+def foundation_rows(linear: LinearFoundation, bilinear: BilinearFoundation,
+                    cubic: CubicFoundation) -> list[dict]:
+    """Parameters of the three foundation laws of Section 4, in engineering units.
+
+    Returns
+    -------
+    list of dict
+        Keys ``law``, ``equation``, ``symbol``, ``value``, ``unit``, ``scale``
+        and ``si`` (``value * scale == si``).
+    """
+    spec = [
+        ("linear", "(22)", r"$k_2$", linear.stiffness, "MN/m", 1e6),
+        ("linear", "(22)", r"$\eta_2$", linear.damping, "MN·s/m", 1e6),
+        ("bilinear", "(24)", r"$k_2^+$ (compression, $w<0$)", bilinear.compression_stiffness,
+         "MN/m", 1e6),
+        ("bilinear", "(24)", r"$k_2^-$ (tension, $w\geq 0$)", bilinear.tension_stiffness,
+         "MN/m", 1e6),
+        ("bilinear", "(24)", r"$\eta_2$", bilinear.damping, "MN·s/m", 1e6),
+        ("cubic", "(25)", r"$k_2$", cubic.stiffness, "MN/m", 1e6),
+        ("cubic", "(25)", r"$k_3$", cubic.cubic_stiffness, "kN/mm³", 1e3 / 1e-9),
+        ("cubic", "(25)", r"$\varepsilon$", cubic.epsilon, "–", 1.0),
+        ("cubic", "(25)", r"$\eta_2$", cubic.damping, "MN·s/m", 1e6),
+    ]
+    return [dict(law=law, equation=eq, symbol=sym, si=float(si), value=float(si) / scale,
+                 unit=unit, scale=scale) for law, eq, sym, si, unit, scale in spec]
+
+
+def foundation_table(linear: LinearFoundation, bilinear: BilinearFoundation,
+                     cubic: CubicFoundation) -> str:
+    """The foundation parameters of Section 4 as a markdown table."""
+    rows = [(r["law"], r["equation"], r["symbol"], f"{r['value']:g}", r["unit"])
+            for r in foundation_rows(linear, bilinear, cubic)]
+    return markdown_table(["Law", "Eq.", "Symbol", "Value", "Unit"], rows)
+
+
+def derived_table(track: Track) -> str:
+    """Quantities derived from Table 1 that the book uses, as a markdown table.
+
+    Period T = H/v, first harmonic 2 pi v / H, mean load per sleeper 2QL/H,
+    omega_0 = sqrt(k1/M), beta = eta1/M, and the frequency
+    omega* = v^2 sqrt(rho S / EI) where omega / v = k_b.
+    """
+    rows = [
+        ("Period of the load at one sleeper", r"$T = H/v$", f"{track.period:.4g}", "s"),
+        ("First harmonic", r"$\omega_1 = 2\pi v/H$", f"{track.fundamental_frequency:.4g}",
+         "rad/s"),
+        ("Mean train load per sleeper", r"$2QL/H$",
+         f"{track.static_load_per_sleeper / 1e3:.4g}", "kN"),
+        ("Pad–sleeper frequency", r"$\omega_0 = \sqrt{k_1/M}$",
+         f"{np.sqrt(track.pad_natural_frequency_squared):.4g}", "rad/s"),
+        ("Pad damping rate", r"$\beta = \eta_1/M$", f"{track.pad_damping_rate:.5g}", "1/s"),
+        ("Frequency where $\\omega/v = k_b$", r"$\omega^* = v^2\sqrt{\rho S/EI}$",
+         f"{critical_frequency(track):.4g}", "rad/s"),
+    ]
+    return markdown_table(["Quantity", "Symbol", "Value", "Unit"], rows)
+
+
+_NOTATION = (
+    (r"$x$", "position along the rail; sleeper 0 at $x = 0$, wheels move toward $+x$", "m"),
+    (r"$t$", "time; $t = 0$ when a front wheel is above sleeper 0", "s"),
+    (r"$w_r(x,t)$", "rail displacement, positive upward", "m"),
+    (r"$w(t)$", "displacement of sleeper 0, positive upward", "m"),
+    (r"$\rho S,\ EI$", "rail mass per length, bending stiffness", "kg/m, N·m²"),
+    (r"$k_1,\ \eta_1$", "pad stiffness and damping", "N/m, N·s/m"),
+    (r"$M$", "mass of one sleeper", "kg"),
+    (r"$f(w, w')$", "force of the sleeper on the foundation (its reaction is $-f$)", "N"),
+    (r"$R(t)$", "force of sleeper 0 on the rail (pad force)", "N"),
+    (r"$Q,\ v$", "load of one wheel (acting downward), train speed", "N, m/s"),
+    (r"$L,\ D,\ H$", "sleeper spacing, wheel spacing in a wagon, wagon length", "m"),
+    (r"$\omega,\ \hat f(\omega)$", r"angular frequency; $\hat f(\omega)=\int f(t)e^{-i\omega t}dt$",
+     "rad/s"),
+    (r"$k_b$", r"free bending wavenumber, $k_b^4 = \rho S\omega^2/EI$", "1/m"),
+    (r"$\eta_E(\omega)$", "receptance of the periodically supported rail, eq. (3)", "m/N"),
+    (r"$A(\omega)$", r"pad dynamic stiffness $k_1 + i\omega\eta_1$", "N/m"),
+    (r"$\Gamma(\omega)$", "load transfer of eq. (6)", "m⁴"),
+    (r"$\omega_n,\ T$", r"harmonics $2\pi n v/H$, period $H/v$", "rad/s, s"),
+    (r"$c_n$", "Fourier coefficients of $w(t)$", "m"),
+    (r"$P_n,\ F_n$", "rail coupling and train load of harmonic $n$, eq. (16)", "1/s², m/s²"),
+    (r"$m,\ k$", "number of harmonics kept, iteration index", "–"),
+)
+
+
+def notation_table() -> str:
+    """The book's notation (symbol, meaning, SI unit) as a markdown table."""
+    return markdown_table(["Symbol", "Meaning", "SI unit"], _NOTATION)
