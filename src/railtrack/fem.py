@@ -61,7 +61,8 @@ def sleepers_on_ring(track: Track) -> int:
     if count < 1 or abs(ratio - count) > RING_TOLERANCE:
         raise ValueError(
             "the time-domain ring model needs H/L (wagon_length / sleeper_spacing) "
-            f"to be an integer; got H/L = {ratio!r}"
+            f"to be an integer; got H/L = {ratio:.6g} (H = {float(track.wagon_length):g} m, "
+            f"L = {float(track.sleeper_spacing):g} m)"
         )
     return count
 
