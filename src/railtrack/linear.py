@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .foundations import LinearFoundation
-from .sleeper import rail_coupling, sleeper_operator
+from .sleeper import coupling_and_transfer, sleeper_operator
 from .track import Track
 from .train import load_coefficients
 
@@ -58,8 +58,9 @@ def analytic_coefficients(
         raise ValueError(f"harmonics must be an integer >= 1; got {harmonics!r}")
     omega = track.harmonic_frequencies(int(harmonics))
     law = (foundation.stiffness + 1j * foundation.damping * omega) / track.sleeper_mass
-    denominator = rail_coupling(track, omega) - sleeper_operator(track, omega) - law
-    return load_coefficients(track, omega) / denominator
+    coupling, transfer = coupling_and_transfer(track, omega)
+    denominator = coupling - sleeper_operator(track, omega) - law
+    return load_coefficients(track, omega, transfer) / denominator
 
 
 def sweep_speeds(
