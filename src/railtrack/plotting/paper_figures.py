@@ -105,6 +105,14 @@ def _draw_panel(ax: Axes, data: PanelData, track: Track, *, title: str) -> None:
     ax.legend(loc="lower center", bbox_to_anchor=(0.62, 0.02), fontsize=7.5, ncol=2)
 
 
+def _single_panel(data_function, track, foundation, title: str, **kwargs) -> Figure:
+    """Draw the one panel that `data_function` computes (Figures 5, 6 and 7)."""
+    track = Track.paper() if track is None else track
+    fig, ax = new_figure()
+    _draw_panel(ax, data_function(track, foundation, **kwargs), track, title=title)
+    return fig
+
+
 def figure3(track: Track | None = None, foundation: LinearFoundation | None = None,
             **kwargs) -> Figure:
     """Figure 3 of the paper: linear foundation, analytic (eq. 23) against eq. (21).
@@ -151,11 +159,7 @@ def figure5(track: Track | None = None, foundation: BilinearFoundation | None = 
 
     Keyword arguments are those of `figure5_data`.
     """
-    track = Track.paper() if track is None else track
-    data = figure5_data(track, foundation, **kwargs)
-    fig, ax = new_figure()
-    _draw_panel(ax, data, track, title=r"Ratio $e = k_2^- / k_2^+$")
-    return fig
+    return _single_panel(figure5_data, track, foundation, r"Ratio $e = k_2^- / k_2^+$", **kwargs)
 
 
 def figure6(track: Track | None = None, foundation: CubicFoundation | None = None,
@@ -164,11 +168,7 @@ def figure6(track: Track | None = None, foundation: CubicFoundation | None = Non
 
     Keyword arguments are those of `figure6_data`.
     """
-    track = Track.paper() if track is None else track
-    data = figure6_data(track, foundation, **kwargs)
-    fig, ax = new_figure()
-    _draw_panel(ax, data, track, title="Number of iterations k")
-    return fig
+    return _single_panel(figure6_data, track, foundation, "Number of iterations k", **kwargs)
 
 
 def figure7(track: Track | None = None, foundation: CubicFoundation | None = None,
@@ -177,8 +177,4 @@ def figure7(track: Track | None = None, foundation: CubicFoundation | None = Non
 
     Keyword arguments are those of `figure7_data`.
     """
-    track = Track.paper() if track is None else track
-    data = figure7_data(track, foundation, **kwargs)
-    fig, ax = new_figure()
-    _draw_panel(ax, data, track, title="Nonlinearity parameter ε")
-    return fig
+    return _single_panel(figure7_data, track, foundation, "Nonlinearity parameter ε", **kwargs)
