@@ -142,3 +142,15 @@ def test_receptance_check_table_rows():
     assert len(lines) == 4
     closed = float(lines[3].split("|")[2])
     assert closed == pytest.approx(rt.rail_receptance(TRACK, 50.0) * 1e6, rel=1e-8)
+
+
+def test_notation_table_is_complete_and_lists_each_symbol_once():
+    from railtrack.plotting.tables import notation_table
+
+    rows = notation_table().splitlines()[2:]
+    symbols = [row.split("|")[1].strip() for row in rows]
+    assert len(symbols) == len(set(symbols))
+    text = " ".join(symbols)
+    for needed in (r"\beta", r"\omega_0", "$e$", r"\varepsilon", "N_0", r"\mathcal{F}_{nk}",
+                   "k_2,", r"\eta_2", "k_3", "k_2^+", "$g(w, w')$", "$D$", r"\ell_j"):
+        assert needed in text, needed

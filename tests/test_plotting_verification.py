@@ -8,6 +8,7 @@ the fixed point's mean after k steps from zero, c_0 (1 - q^k) with
 q = 1 - k2 / k1 (Section 4.1); exact power laws for `observed_orders`.
 """
 
+import dataclasses
 import types
 
 import matplotlib
@@ -122,12 +123,26 @@ def test_convergence_study_coarse():
 
 def test_plots_draw_every_case(linear, tensionless):
     fig = vf.plot_comparison([linear, tensionless])
-    main = [ax for ax in fig.axes if ax.get_title()]
-    assert [ax.get_title() for ax in main] == ["linear", "bilinear, e = 0"]
-    assert len(main[0].lines) == 3
-    np.testing.assert_allclose(main[1].lines[0].get_ydata(), tensionless.curves["fe"] * MM)
+    full = fig.axes[0::2]
+    assert [ax.get_title("left") for ax in full] == ["linear", "bilinear, e = 0"]
+    assert len(full[0].lines) == 3
+    np.testing.assert_allclose(full[1].lines[0].get_ydata(), tensionless.curves["fe"] * MM)
+    # the zoom shows the deepest point of the reference, in ms
+    zoom = fig.axes[3]
+    trough = np.argmin(tensionless.curves["reference"])
+    assert zoom.lines[1].get_ydata().min() == tensionless.curves["reference"][trough] * MM
+    assert zoom.lines[1].get_xdata()[0] < tensionless.times[trough] * 1e3 < zoom.lines[1].get_xdata()[-1]
     plt.close(fig)
     fig = vf.plot_error_budget([linear, tensionless])
     assert len(fig.axes[0].lines) == 3
     plt.close(fig)
     assert vf.newton_solve_time(TRACK, LINEAR, repeats=3) > 0
+
+
+def test_identical_cases_share_one_row(linear, tensionless):
+    copy = dataclasses.replace(linear, label="bilinear, e = 1")
+    groups = vf.distinct_cases([linear, tensionless, copy])
+    assert [[c.label for c in g] for g in groups] == [["linear", "bilinear, e = 1"], ["bilinear, e = 0"]]
+    fig = vf.plot_comparison([linear, tensionless, copy])
+    assert len(fig.axes) == 4 and fig.axes[0].get_title("left") == "linear = bilinear, e = 1"
+    plt.close(fig)

@@ -220,6 +220,7 @@ def plot_rail_and_sleeper(solution, samples: int = 400) -> Figure:
     ax.set_xlabel("")
     label_displacement_axes(pad, ylabel="compression [mm]")
     ax.set_xlim(0.0, solution.period)
-    ax.legend(fontsize="small", loc="lower right")
-    pad.legend(fontsize="small", loc="upper right")
+    # Above the axes, so that no legend covers a curve.
+    ax.legend(fontsize="small", loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=3, frameon=False)
+    pad.legend(fontsize="small", loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=2, frameon=False)
     return fig

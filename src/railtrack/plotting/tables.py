@@ -160,10 +160,23 @@ _NOTATION = (
     (r"$\rho S,\ EI$", "rail mass per length, bending stiffness", "kg/m, N·m²"),
     (r"$k_1,\ \eta_1$", "pad stiffness and damping", "N/m, N·s/m"),
     (r"$M$", "mass of one sleeper", "kg"),
+    (r"$\omega_0$", r"pad–sleeper frequency, $\omega_0^2 = k_1/M$, eq. (8)", "rad/s"),
+    (r"$\beta$", r"pad damping rate $\eta_1/M$, eq. (8) (used for nothing else)", "1/s"),
     (r"$f(w, w')$", "force of the sleeper on the foundation (its reaction is $-f$)", "N"),
+    (r"$g(w, w')$", r"foundation force per sleeper mass, $f/M$, eq. (8) (used for nothing else)",
+     "m/s²"),
+    (r"$k_2,\ \eta_2$", "foundation stiffness and damping, eqs. (22) and (25)", "N/m, N·s/m"),
+    (r"$k_2^+,\ k_2^-$", r"bilinear foundation stiffness in compression ($w < 0$) and in "
+     r"tension ($w \ge 0$), eq. (24)", "N/m"),
+    (r"$e$", r"tension-to-compression ratio $k_2^-/k_2^+$ of eq. (24)", "–"),
+    (r"$k_3,\ \varepsilon$", r"cubic stiffness and its dimensionless weight in "
+     r"$\varepsilon k_3 w^3$, eq. (25)", "N/m³, –"),
     (r"$R(t)$", "force of sleeper 0 on the rail (pad force)", "N"),
     (r"$Q,\ v$", "load of one wheel (acting downward), train speed", "N, m/s"),
-    (r"$L,\ D,\ H$", "sleeper spacing, wheel spacing in a wagon, wagon length", "m"),
+    (r"$L,\ H$", "sleeper spacing, wagon length", "m"),
+    (r"$D$", "wheel (axle) spacing within the bogie of a wagon; nothing else", "m"),
+    (r"$\ell_j,\ K$", r"distance of wheel $j$ behind the reference wheel (the paper's $D_j$), "
+     "number of wheels", "m, –"),
     (r"$\omega,\ \hat f(\omega)$", r"angular frequency; $\hat f(\omega)=\int f(t)e^{-i\omega t}dt$",
      "rad/s"),
     (r"$k_b$", r"free bending wavenumber, $k_b^4 = \rho S\omega^2/EI$", "1/m"),
@@ -173,7 +186,11 @@ _NOTATION = (
     (r"$\omega_n,\ T$", r"harmonics $2\pi n v/H$, period $H/v$", "rad/s, s"),
     (r"$c_n$", "Fourier coefficients of $w(t)$", "m"),
     (r"$P_n,\ F_n$", "rail coupling and train load of harmonic $n$, eq. (16)", "1/s², m/s²"),
+    (r"$\mathcal{F}_{nk}$", r"harmonic $n$ of $g$ at iterate $k$, eq. (20) ($\mathcal{F}_n$ at the "
+     "solution); not the load $F_n$", "m/s²"),
     (r"$m,\ k$", "number of harmonics kept, iteration index", "–"),
+    (r"$N_0$", r"split of eq. (21): harmonics $|n| \le N_0$ use its first branch, the others "
+     "its second", "–"),
 )
 
 

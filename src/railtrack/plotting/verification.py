@@ -26,7 +26,7 @@ from .model import markdown_table
 from .style import DISPLACEMENT_LABEL, MM, TIME_LABEL, new_figure
 
 __all__ = ["METHODS", "CaseComparison", "paper_cases", "compare_case", "fe_against_harmonics",
-           "comparison_table", "truncation_table", "plot_comparison", "plot_error_budget",
+           "comparison_table", "truncation_table", "distinct_cases", "plot_comparison", "plot_error_budget",
            "ConvergenceStudy", "observed_orders", "convergence_study", "convergence_table",
            "plot_convergence", "newton_solve_time"]
 
@@ -168,28 +168,67 @@ def truncation_table(cases: Sequence[CaseComparison]) -> str:
                            "mean: truncation [mm]", "mean: iteration [mm]", "larger"], rows)
 
 
-def plot_comparison(cases: Sequence[CaseComparison]) -> Figure:
-    """One panel per case: FE (thick grey), Newton m = 200 (dashed), m = 15 (thin); inset: the trough."""
-    fig, axes = new_figure(4, 2, height=2.0, sharex=True, sharey=True)
+def distinct_cases(cases: Sequence[CaseComparison], rtol: float = 1e-12) -> list[list[CaseComparison]]:
+    """Group cases whose reference curves coincide (e.g. linear, bilinear e = 1, cubic eps = 0).
+
+    Two cases are grouped when their m = 200 curves differ by at most `rtol`
+    times the peak; the groups keep the order of first appearance.
+    """
+    groups: list[list[CaseComparison]] = []
+    for case in cases:
+        for group in groups:
+            first = group[0]
+            if (first.times.shape == case.times.shape and np.max(np.abs(
+                    first.curves["reference"] - case.curves["reference"])) <= rtol * first.peak):
+                group.append(case)
+                break
+        else:
+            groups.append([case])
+    return groups
+
+
+def plot_comparison(cases: Sequence[CaseComparison], zoom: int = 25) -> Figure:
+    """One row per distinct case: the whole period (left) and a zoom on the deepest point (right).
+
+    Cases with the same response (`distinct_cases`) share a row, titled
+    with all their labels.  FE: thick grey; Newton m = 200: dashed black;
+    Newton m = 15: thin orange.
+
+    Parameters
+    ----------
+    cases : sequence of CaseComparison
+    zoom : int
+        Half-width of the zoom window, in FE time steps around the deepest point.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Axes in pairs (full, zoom); the full axes' titles are the group labels
+        joined by " = "; t in s on x (ms in the zoom), w in mm on y.
+    """
+    groups = distinct_cases(cases)
+    fig, axes = new_figure(len(groups), 2, width=7.5, height=1.9, squeeze=False,
+                           gridspec_kw=dict(width_ratios=(1.7, 1.0)))
     styles = {"fe": dict(color="0.7", lw=4.0), "reference": dict(color="black", ls="--", lw=1.0),
               "newton": dict(color="tab:orange", lw=1.0)}
-    for ax, case in zip(axes.flat, cases):
-        inset = ax.inset_axes([0.45, 0.2, 0.32, 0.42])
-        trough = np.argmin(case.curves["reference"])
-        window = slice(max(trough - 25, 0), trough + 26)
+    for (full, detail), group in zip(axes, groups):
+        case = group[0]
+        trough = int(np.argmin(case.curves["reference"]))
+        window = slice(max(trough - zoom, 0), trough + zoom + 1)
         for key, style in styles.items():
-            ax.plot(case.times, case.curves[key] * MM, label=METHODS[key], **style)
-            inset.plot(case.times[window], case.curves[key][window] * MM, **style)
-        inset.tick_params(labelsize=6)
-        ax.set_title(case.label, fontsize=9)
-        ax.grid(True, alpha=0.3)
-    last = axes.flat[-1]
-    last.axis("off")
-    last.legend(*axes.flat[0].get_legend_handles_labels(), loc="center", fontsize=8,
-                title="inset: zoom on the deepest point", title_fontsize=7.5)
-    axes.flat[0].set_xlim(0.0, cases[0].times[-1])
-    fig.supxlabel(TIME_LABEL, fontsize=9)
+            full.plot(case.times, case.curves[key] * MM, label=METHODS[key], **style)
+            detail.plot(case.times[window] * 1e3, case.curves[key][window] * MM, **style)
+        full.set_title(" = ".join(c.label for c in group), fontsize=9, loc="left")
+        full.set_xlim(0.0, case.times[-1])
+        detail.set_title("zoom on the deepest point", fontsize=8, loc="left")
+        for ax in (full, detail):
+            ax.grid(True, alpha=0.3)
+            ax.tick_params(labelsize=8)
+    axes[-1, 0].set_xlabel(TIME_LABEL, fontsize=8)
+    axes[-1, 1].set_xlabel("time t [ms]", fontsize=8)
     fig.supylabel(DISPLACEMENT_LABEL, fontsize=9)
+    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside upper center", ncol=3,
+               fontsize=8)
     return fig
 
 
@@ -263,7 +302,7 @@ def convergence_table(study: ConvergenceStudy) -> str:
                                  ("steps per period", study.steps, study.step_errors)):
         orders = ["–"] + [f"{p:.2f}" for p in observed_orders(1.0 / np.array(values), errors)]
         rows += [[name, v, f"{e * MM:.2e}", p] for v, e, p in zip(values, errors, orders)]
-    return markdown_table(["refined", "value", "max abs(w_FE − w_eq23) [mm]", "observed order"], rows)
+    return markdown_table(["refined", "value", "largest error of the FE model against eq. (23) [mm]", "observed order"], rows)
 
 
 def plot_convergence(study: ConvergenceStudy) -> Figure:
@@ -283,7 +322,7 @@ def plot_convergence(study: ConvergenceStudy) -> Figure:
         ax.set(xlabel=xlabel, title=title)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7.5)
-    axes[0].set_ylabel("max over t of |w_FE − w_eq23| [mm]")
+    axes[0].set_ylabel("FE error against eq. (23),\nlargest over one period [mm]")
     return fig
 
 
