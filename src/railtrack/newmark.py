@@ -19,7 +19,65 @@ import scipy.sparse.linalg as spla
 from .fem import RingMesh
 from .foundations import Foundation
 
-__all__ = ["reference_law", "CondensedSystem", "static_state", "NewmarkStepper"]
+__all__ = [
+    "NonFiniteLawError",
+    "describe_law",
+    "instability_hint",
+    "evaluate_law",
+    "reference_law",
+    "CondensedSystem",
+    "static_state",
+    "NewmarkStepper",
+]
+
+
+class NonFiniteLawError(ValueError):
+    """The foundation law returned NaN or infinity; `where` says for which w, w'."""
+
+
+def describe_law(foundation) -> str:
+    """A short name of the law for messages: the callable's name for a wrapped callable."""
+    law = getattr(foundation, "law", None)
+    if callable(law):
+        return f"{type(foundation).__name__}({getattr(law, '__qualname__', repr(law))})"
+    text = repr(foundation)
+    return text if len(text) <= 100 else text[:97] + "..."
+
+
+def instability_hint(foundation) -> str:
+    """Why a track grows without bound, for messages: the law's linearization at rest."""
+    try:
+        stiffness, damping = (float(x) for x in foundation.linearization())
+        at_rest = f" (at rest k = df/dw = {stiffness:.3g} N/m, c = df/dw' = {damping:.3g} N s/m)"
+    except Exception:  # noqa: BLE001 - only decorates a message
+        at_rest = ""
+    return (
+        f"the system is unstable: does the foundation law {describe_law(foundation)}{at_rest} "
+        "have a negative stiffness or damping? A stable track needs f(w, w') increasing in w "
+        "and in w'"
+    )
+
+
+def evaluate_law(foundation, w: np.ndarray, rate: np.ndarray):
+    """f(w, w') [N], df/dw [N/m] and df/dw' [N s/m], refusing non-finite values.
+
+    Raises
+    ------
+    NonFiniteLawError
+        Naming the law, the first sleeper concerned and its w [m], w' [m/s].
+    """
+    force = np.asarray(foundation.force(w, rate), float)
+    slope, viscosity = (np.asarray(value, float) for value in foundation.tangent(w, rate))
+    for name, value in (("force", force), ("stiffness df/dw", slope), ("damping df/dw'", viscosity)):
+        bad = ~np.isfinite(np.broadcast_to(value, np.shape(w)))
+        if np.any(bad):
+            i = int(np.argmax(bad))
+            raise NonFiniteLawError(
+                f"the foundation law {describe_law(foundation)} returned a non-finite {name} "
+                f"({np.broadcast_to(value, np.shape(w))[i]}) at w = {w[i]:.6g} m, "
+                f"w' = {rate[i]:.6g} m/s (sleeper {i}, {int(np.sum(bad))} sleeper(s) in all)"
+            )
+    return force, slope, viscosity
 
 
 def reference_law(foundation) -> tuple[float, float]:
@@ -70,19 +128,39 @@ class CondensedSystem:
         `remainder(w)` returns g (the foundation force beyond the reference
         law, N) and its derivative d (N/m); `guess_force` starts the iteration
         (the previous step's g, which changes little over one step).
-        Returns (w, g).  Raises RuntimeError if Newton does not converge.
+        Returns (w, g).
+
+        Raises
+        ------
+        RuntimeError
+            If Newton does not converge, its Jacobian is singular, or the
+            iterate stops being finite.
         """
         w = free - self.influence @ guess_force
         for _ in range(max_iterations + 1):
             force, slope = remainder(w)
             mismatch = w - free + self.influence @ force
-            if np.max(np.abs(mismatch)) <= tol:
+            error = float(np.max(np.abs(mismatch)))
+            if error <= tol:
                 return w, force
+            if not np.isfinite(error):
+                raise RuntimeError(
+                    "Newton on the sleeper displacements diverged: its mismatch is not finite "
+                    f"(the free response reached {np.max(np.abs(free)):.3g} m)"
+                )
             jacobian = self.identity + self.influence * slope[None, :]
-            w = w - np.linalg.solve(jacobian, mismatch)
+            try:
+                w = w - np.linalg.solve(jacobian, mismatch)
+            except np.linalg.LinAlgError:
+                raise RuntimeError(
+                    "Newton on the sleeper displacements stopped: its Jacobian I + S diag(d) is "
+                    "singular, the foundation's tangent d = df/dw + (2/dt) df/dw' - (k0 + (2/dt) c0) "
+                    f"reaching {np.min(slope):.3g} N/m cancels the ring's stiffness"
+                ) from None
         raise RuntimeError(
             f"Newton on the sleeper displacements did not converge in {max_iterations} "
-            f"iterations (mismatch {np.max(np.abs(mismatch)):.2e} m > {tol:.2e} m)"
+            f"iterations (mismatch {error:.2e} m > {tol:.2e} m): raise max_newton_iterations, "
+            "or check that the foundation law is smooth enough where the sleepers are"
         )
 
 
@@ -101,8 +179,8 @@ def static_state(
     zero = np.zeros(mesh.n_sleepers)
 
     def remainder(w):
-        slope, _ = foundation.tangent(w, zero)
-        return foundation.force(w, zero) - k0 * w, np.asarray(slope, float) - k0
+        force, slope, _ = evaluate_law(foundation, w, zero)
+        return force - k0 * w, slope - k0
 
     _, force = system.solve_sleepers(free[mesh.sleeper_dofs], remainder, zero, tol, iterations)
     return free - system.response @ force
@@ -141,10 +219,9 @@ class NewmarkStepper:
 
         def remainder(w):
             rate = gain * w - offset
-            slope, viscosity = foundation.tangent(w, rate)
-            force = foundation.force(w, rate) - self.k0 * w - self.c0 * rate
-            derivative = np.asarray(slope, float) - self.k0 + gain * (np.asarray(viscosity, float) - self.c0)
-            return force, derivative
+            force, slope, viscosity = evaluate_law(foundation, w, rate)
+            return (force - self.k0 * w - self.c0 * rate,
+                    slope - self.k0 + gain * (viscosity - self.c0))
 
         return remainder
 
