@@ -24,6 +24,10 @@ the second-order Newmark time-step error, ~1.7e-9 m against a 1.13e-3 m peak.
 
 from __future__ import annotations
 
+import time
+import tracemalloc
+import warnings
+
 import numpy as np
 import pytest
 import scipy.sparse as sp
@@ -37,7 +41,9 @@ from railtrack import (
     solve,
 )
 from railtrack.fem import ring_mesh, wheel_load_entries
+from railtrack.runcost import LongRunWarning, check_run_cost
 from railtrack.timedomain import TimeDomainSolution, simulate_time_domain
+from railtrack.timestep import TimeStepWarning, estimate_step_error
 
 TRACK = Track.paper()
 SLEEPERS = 30  # H / L for the paper's train
@@ -220,6 +226,8 @@ def test_reports_not_converged_after_max_periods():
         (TRACK, {"steps_per_period": 0}, "steps_per_period"),
         (TRACK, {"steps_per_period": -10}, "steps_per_period"),
         (TRACK, {"steps_per_period": True}, "steps_per_period"),
+        (TRACK, {"steps_per_period": 100}, "multiple of H/L = 30"),
+        (TRACK, {"warn_step_error": 0.0}, "warn_step_error"),
         (TRACK, {"max_periods": 0}, "max_periods"),
         (TRACK, {"tol": 0.0}, "tol"),
         (TRACK, {"start": "moving"}, "start"),
@@ -228,3 +236,120 @@ def test_reports_not_converged_after_max_periods():
 def test_bad_input_raises_value_error(track, arguments, match):
     with pytest.raises(ValueError, match=match):
         simulate_time_domain(track, LinearFoundation.paper(), **arguments)
+
+
+# --- Failure modes of issue 7, section 2: each test failed before the fix. ---
+
+
+@pytest.mark.parametrize("steps, match", [(1, "multiple of H/L = 30"), (30, "sleeper-passing"),
+                                          (60, "sleeper-passing")])
+def test_steps_that_cannot_represent_the_moving_load_are_refused(steps, match):
+    # 1 step per period used to return the static state marked converged,
+    # 30 (one step per L / v, the sleeper-passing frequency aliased to zero)
+    # a 1.2 % error marked converged.
+    with pytest.raises(ValueError, match=match) as info:
+        simulate_time_domain(TRACK, LinearFoundation.paper(), 8, steps)
+    assert "Use" in str(info.value)  # the message says what to pass instead
+
+
+def test_coarse_steps_warn_with_the_estimated_error():
+    # 90 steps (3 per L / v): measured 1.17e-3 of the peak, estimated the same.
+    with pytest.warns(TimeStepWarning, match=r"estimated time-step error is 0\.117 % .* >= 120"):
+        result = simulate_time_domain(TRACK, LinearFoundation.paper(), 8, 90)
+    assert 1.1e-3 < result.step_error < 1.25e-3
+    # A deliberate study can ask for a looser bound, or skip the estimate.
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", TimeStepWarning)
+        assert simulate_time_domain(TRACK, LinearFoundation.paper(), 2, 90,
+                                    warn_step_error=2e-3).step_error > 1e-3
+        assert np.isnan(simulate_time_domain(TRACK, LinearFoundation.paper(), 2, 90,
+                                             warn_step_error=None).step_error)
+
+
+@pytest.mark.parametrize("law", [LinearFoundation.paper(), CubicFoundation.paper(epsilon=0.8)])
+@pytest.mark.parametrize("steps", [90, 120, 240, 480, 960])
+def test_step_error_estimate_matches_the_measured_error(law, steps):
+    # Measured against harmonic balance with 200 harmonics (its own error
+    # < 1e-9 of the peak here): estimate / measured = 0.99 to 1.07 for both
+    # laws; the issue asks for a factor 3.  (For the kinked tensionless law
+    # the linearization underestimates by 1.3-3x; not tested.)
+    reference = solve(TRACK, law, 200, method="analytic" if isinstance(law, LinearFoundation) else "newton")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", TimeStepWarning)
+        result = simulate_time_domain(TRACK, law, 8, steps, max_periods=60)
+    exact = reference.sleeper_displacement(result.times)
+    measured = np.max(np.abs(result.sleeper_displacement - exact)) / np.max(np.abs(exact))
+    assert 1 / 3 < result.step_error / measured < 3
+
+
+def test_step_error_estimate_is_second_order_and_vanishes_when_quasi_static():
+    errors = [estimate_step_error(TRACK, 20e6, 0.2e6, n)[0] for n in (600, 1200, 2400, 4800, 48000)]
+    orders = np.log2(np.array(errors[:3]) / np.array(errors[1:4]))
+    np.testing.assert_allclose(orders, 2.0, atol=0.1)
+    assert errors[4] == pytest.approx(errors[3] / 100, rel=0.05)
+    # At 1 mm/s inertia is negligible: only the dashpots' lag is left to err.
+    assert estimate_step_error(Track.paper(speed=1e-3), 20e6, 0.2e6, 120)[0] < 1e-7
+
+
+def _nan_below_a_millimetre(w, v):
+    return np.where(w < -1e-3, np.nan, 20e6 * w + 0.2e6 * v)
+
+
+def _nan_when_fast(w, v):
+    return np.where(v < -0.02, np.nan, 20e6 * w + 0.2e6 * v)
+
+
+@pytest.mark.parametrize("law, start, match", [
+    (_nan_below_a_millimetre, "static", r"_nan_below_a_millimetre\) returned a non-finite force \(nan\) "
+     r"at w = -0\.00112797 m, w' = 0 m/s .* in the static state"),
+    (_nan_below_a_millimetre, "rest", r"non-finite force \(nan\) at w = -0\.001000.* at step 141 of "
+     r"2400 in period 1 \(t = 0\.0235 s\)"),
+    (_nan_when_fast, "static", r"w' = -0\.0203994 m/s \(sleeper 26.* at step 15 of 2400 in period 1"),
+])
+def test_law_returning_nan_is_named_with_where_it_happened(law, start, match):
+    # Used to end in "RuntimeError: Newton ... did not converge (mismatch nan ...)".
+    with pytest.raises(ValueError, match=match) as info:
+        simulate_time_domain(TRACK, law, start=start)
+    assert "must return finite forces" in str(info.value)
+
+
+@pytest.mark.parametrize("law, at_rest", [
+    (lambda w, v: -(20e6 * w + 0.2e6 * v), r"k = df/dw = -2e\+07 N/m, c = df/dw' = -2e\+05"),
+    (lambda w, v: 20e6 * w - 0.2e6 * v, r"k = df/dw = 2e\+07 N/m, c = df/dw' = -2e\+05"),
+])
+def test_unstable_track_says_it_grew_without_bound(law, at_rest):
+    # Used to end in "RuntimeError: Newton ... did not converge (mismatch nan ...)".
+    with pytest.raises(RuntimeError, match=r"grew without bound in period 1: .* at step \d+ of 2400 .*"
+                       r"the system is unstable.*" + at_rest) as info:
+        simulate_time_domain(TRACK, law)
+    assert "negative stiffness or damping" in str(info.value)
+
+
+@pytest.mark.parametrize("elements, steps", [(8, 10**8), (10**5, 2400)])
+def test_huge_runs_are_refused_before_allocating(elements, steps):
+    tracemalloc.start()
+    began = time.perf_counter()
+    try:
+        with pytest.raises(ValueError, match=r"would need about [\d.]+ GB of memory.*above the 4 GB "
+                           r"limit.*per period\. Use fewer steps or elements"):
+            simulate_time_domain(TRACK, LinearFoundation.paper(), elements, steps)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert time.perf_counter() - began < 1.0
+    assert peak < 1e6  # bytes: nothing of the run's size was allocated
+
+
+def test_long_runs_warn_with_the_estimated_time():
+    # 2.4 million steps fit in memory (1.9 GB) but take ~12 min a period.
+    with pytest.warns(LongRunWarning, match=r"estimated to take \d+ min per period"):
+        check_run_cost(SLEEPERS, 8, 2_400_000, 40)
+    began = time.perf_counter()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", LongRunWarning)  # stop the call at the warning
+        with pytest.raises(LongRunWarning):
+            simulate_time_domain(TRACK, LinearFoundation.paper(), 8, 2_400_000)
+    assert time.perf_counter() - began < 1.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", LongRunWarning)
+        check_run_cost(SLEEPERS, 8, STEPS, 40)  # the default: no warning
