@@ -21,7 +21,7 @@ from typing import Callable, Protocol
 
 import numpy as np
 
-from .track import require_non_negative, require_positive
+from .track import as_float64, require_non_negative, require_positive
 
 __all__ = [
     "Foundation",
@@ -71,6 +71,7 @@ class LinearFoundation:
     def __post_init__(self) -> None:
         require_positive("stiffness", self.stiffness, "N/m")
         require_non_negative("damping", self.damping, "N s/m")
+        as_float64(self)
 
     @classmethod
     def paper(cls) -> "LinearFoundation":
@@ -114,6 +115,7 @@ class BilinearFoundation:
         require_positive("compression_stiffness", self.compression_stiffness, "N/m")
         require_non_negative("tension_stiffness", self.tension_stiffness, "N/m")
         require_non_negative("damping", self.damping, "N s/m")
+        as_float64(self)
 
     @classmethod
     def paper(cls, ratio: float = 0.5) -> "BilinearFoundation":
@@ -169,6 +171,7 @@ class CubicFoundation:
         require_non_negative("cubic_stiffness", self.cubic_stiffness, "N/m^3")
         require_non_negative("epsilon", self.epsilon)
         require_non_negative("damping", self.damping, "N s/m")
+        as_float64(self)
 
     @classmethod
     def paper(cls, epsilon: float = 0.8) -> "CubicFoundation":
@@ -197,15 +200,36 @@ class CubicFoundation:
 class CallableFoundation:
     """Any law ``f(w, v)`` given as a Python callable.
 
-    The tangent is taken by central differences with steps scaled to the
-    displacement and velocity amplitudes (1e-7 of them, at least 1e-12 m and
-    1e-10 m/s).
+    The callable receives arrays w [m] and v = w' [m/s] of one shape and must
+    return the force [N] as a real array of that same shape.  The tangent is
+    taken by central differences with steps scaled to the displacement and
+    velocity amplitudes (1e-7 of them, at least 1e-12 m and 1e-10 m/s).
     """
 
     law: Callable[[np.ndarray, np.ndarray], np.ndarray]
 
+    def __post_init__(self) -> None:
+        if not callable(self.law):
+            raise TypeError(f"law must be a callable f(w, v); got {type(self.law).__name__}")
+
     def force(self, w, v):
-        return np.asarray(self.law(w, v), dtype=float)
+        w = np.asarray(w, dtype=float)
+        v = np.asarray(v, dtype=float)
+        returned = self.law(w, v)
+        shape = np.broadcast(w, v).shape
+        try:
+            force = np.asarray(returned, dtype=float)
+        except (TypeError, ValueError):
+            force = None
+        if force is None or force.shape != shape:
+            described = (
+                f"shape {np.shape(returned)}" if force is not None else type(returned).__name__
+            )
+            raise ValueError(
+                f"the foundation law f(w, v) must return a real array shaped like w, {shape}; "
+                f"it returned {described}: {_preview(returned)}"
+            )
+        return force
 
     def tangent(self, w, v):
         w = np.asarray(w, dtype=float)
@@ -219,6 +243,11 @@ class CallableFoundation:
     def linearization(self) -> tuple[float, float]:
         stiffness, damping = self.tangent(np.zeros(1), np.zeros(1))
         return float(stiffness[0]), float(damping[0])
+
+
+def _preview(value) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
 
 
 def as_foundation(law) -> Foundation:
@@ -237,3 +266,4 @@ def as_foundation(law) -> Foundation:
         "foundation must have force/tangent/linearization methods or be a "
         f"callable f(w, v); got {type(law).__name__}"
     )
+
