@@ -14,8 +14,10 @@ from __future__ import annotations
 import numpy as np
 
 from .fixed_point import SolverOutcome
+from .foundation_at_rest import static_deflection
 from .harmonic_balance import (
     HarmonicSystem,
+    NonFiniteForceError,
     from_real,
     residual,
     residual_jacobian,
@@ -27,18 +29,31 @@ __all__ = ["linear_guess", "iterate_newton"]
 
 
 def linear_guess(system: HarmonicSystem) -> np.ndarray:
-    """Eq. (23) with the foundation's `linearization()`: the starting point.
+    """The starting point: the static mean, and eq. (23) about it for n >= 1.
 
-    Returns zeros if the linearised problem is singular (a law with no
-    stiffness at rest, for instance).
+    The mean c_0 solves the static balance of eq. (17) for n = 0, where the
+    pad and rail terms cancel: f(c_0, 0) = -2 Q L / H
+    (`railtrack.foundations.static_deflection`).  The harmonics n >= 1 are
+    eq. (23) with the law's tangent at (c_0, 0), which is exact for a linear
+    law.  Starting the mean from the static balance rather than from the
+    tangent at rest matters for a law with (almost) no stiffness at rest,
+    such as a pure cubic: there -F_0 / (k/M) is astronomically large.
+    Harmonics whose linearised denominator vanishes start at zero.
     """
-    stiffness, damping = system.foundation.linearization()
-    foundation = (stiffness + 1j * system.omega * damping) / system.sleeper_mass
-    denominator = system.operator + foundation
-    if not np.all(np.isfinite(denominator)) or np.any(np.abs(denominator) == 0):
-        return np.zeros(system.harmonics + 1, dtype=complex)
-    guess = -system.load / denominator
-    guess[0] = guess[0].real
+    force = float(system.track.static_load_per_sleeper)
+    mean = static_deflection(system.foundation, force)
+    if np.isfinite(mean):
+        stiffness, damping = (
+            float(np.ravel(x)[0]) for x in system.foundation.tangent(np.array([mean]), np.zeros(1))
+        )
+    else:
+        stiffness, damping = system.foundation.linearization()
+    law = (stiffness + 1j * system.omega * damping) / system.sleeper_mass
+    denominator = system.operator + law
+    usable = np.isfinite(denominator) & (np.abs(denominator) > 0)
+    guess = np.zeros(system.harmonics + 1, dtype=complex)
+    guess[usable] = -system.load[usable] / denominator[usable]
+    guess[0] = mean if np.isfinite(mean) else guess[0].real
     return guess
 
 
@@ -69,7 +84,7 @@ def iterate_newton(
         steps += 1
         jacobian = residual_jacobian(system, c)
         if not np.all(np.isfinite(jacobian)):
-            message = f"Newton step failed at iteration {steps}: non-finite Jacobian"
+            message = f"the Jacobian is not finite at Newton step {steps}"
             break
         try:
             step = from_real(np.linalg.solve(jacobian, -to_real(current)))
@@ -79,16 +94,20 @@ def iterate_newton(
             # points downhill for the residual norm.
             step = from_real(np.linalg.lstsq(jacobian, -to_real(current), rcond=None)[0])
         step[0] = step[0].real
-        # Backtracking: halve the step until the residual decreases.
+        # Backtracking: halve the step until the residual decreases.  A trial
+        # so far out that the law overflows counts as no decrease.
         for _ in range(30):
             trial = c + step
-            trial_residual = residual(system, trial)
-            trial_norm = residual_norm(system, trial_residual)
+            try:
+                trial_residual = residual(system, trial)
+                trial_norm = residual_norm(system, trial_residual)
+            except NonFiniteForceError:
+                trial_norm = np.inf
             if trial_norm < norm:
                 break
             step *= 0.5
         else:
-            message = f"line search found no decrease at iteration {steps}"
+            message = f"the line search found no decrease of the residual at Newton step {steps}"
             break
         c, current, norm = trial, trial_residual, trial_norm
         history.append(norm)
@@ -97,10 +116,9 @@ def iterate_newton(
     if converged:
         message = f"relative residual {norm:.2e} <= tol {tol:.1e} after {steps} Newton steps"
     elif not message:
-        message = (
-            f"not converged: relative residual {norm:.2e} > tol {tol:.1e} "
-            f"after {steps} Newton steps"
-        )
+        message = f"relative residual {norm:.2e} > tol {tol:.1e} after {steps} Newton steps"
+    else:
+        message += f"; relative residual {norm:.2e} > tol {tol:.1e}"
     return SolverOutcome(
         c, bool(converged), steps, np.array(history), message, np.array(harmonic_residuals[-20:])
     )
