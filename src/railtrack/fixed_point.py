@@ -20,14 +20,24 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .harmonic_balance import HarmonicSystem, nonlinear_coefficients, residual_norm, synthesize
+from .harmonic_balance import (
+    HarmonicSystem,
+    NonFiniteForceError,
+    nonlinear_coefficients,
+    residual_norm,
+    synthesize,
+)
 
 __all__ = [
     "SolverOutcome",
     "contraction_factors",
     "automatic_split",
     "iterate_fixed_point",
+    "DIVERGENCE_FACTOR",
 ]
+
+DIVERGENCE_FACTOR = 1e6
+"""The iteration is stopped as diverged once its residual exceeds this many times its smallest."""
 
 
 class SolverOutcome(NamedTuple):
@@ -85,9 +95,14 @@ def contraction_factors(
     return np.where(np.arange(system.harmonics + 1) <= split, low, high)
 
 
-def automatic_split(system: HarmonicSystem) -> int:
-    """The N0 in 0..m that minimises the largest contraction factor."""
-    worst = [contraction_factors(system, n0).max() for n0 in range(system.harmonics + 1)]
+def automatic_split(system: HarmonicSystem, coefficients: np.ndarray | None = None) -> int:
+    """The N0 in 0..m that minimises the largest contraction factor.
+
+    With `coefficients`, the factors use the tangent averaged over that
+    response (see `contraction_factors`), which matters for a strongly
+    nonlinear law whose stiffness at rest says little about the solution.
+    """
+    worst = [contraction_factors(system, n0, coefficients).max() for n0 in range(system.harmonics + 1)]
     return int(np.argmin(worst))
 
 
@@ -125,15 +140,26 @@ def iterate_fixed_point(
     load = system.load
     c = np.zeros(m + 1, dtype=complex) if initial is None else np.array(initial, dtype=complex)
     history, harmonic_residuals = [], []
-    converged, steps = False, 0
+    converged, diverged, steps = False, "", 0
     for steps in range(max_iterations + 1):
-        nonlinear = nonlinear_coefficients(system, c)
-        current = system.operator * c + nonlinear + load
-        history.append(residual_norm(system, current))
-        harmonic_residuals.append(np.abs(current))
-        if not np.all(np.isfinite(current)):
+        try:
+            nonlinear = nonlinear_coefficients(system, c)
+        except NonFiniteForceError as error:
+            if steps == 0:
+                raise  # the law fails at the start: the law's fault, not the iteration's
+            diverged = f"the foundation law overflowed at w = {error.displacement:.3g} m"
+            steps -= 1
             break
-        if history[-1] <= tol:
+        current = system.operator * c + nonlinear + load
+        norm = residual_norm(system, current)
+        if not np.isfinite(norm) or norm > DIVERGENCE_FACTOR * min(history, default=np.inf):
+            diverged = f"the relative residual grew to {norm:.3g}"
+            history.append(norm)
+            harmonic_residuals.append(np.abs(current))
+            break
+        history.append(norm)
+        harmonic_residuals.append(np.abs(current))
+        if norm <= tol:
             converged = True
             break
         if steps == max_iterations:
@@ -146,11 +172,14 @@ def iterate_fixed_point(
         c[0] = c[0].real  # w is real; guards against round-off in Im c_0
     if converged:
         message = f"relative residual {history[-1]:.2e} <= tol {tol:.1e} after {steps} iterations"
-    else:
+    elif diverged:
+        best = int(np.argmin(history))
         message = (
-            f"not converged: relative residual {history[-1]:.2e} > tol {tol:.1e} "
-            f"after {steps} iterations"
+            f"diverged: {diverged} by iteration {steps + 1}; the residual was smallest "
+            f"({history[best]:.2e}) at iteration {best} and grew from then on"
         )
+    else:
+        message = f"relative residual {history[-1]:.2e} > tol {tol:.1e} after {steps} iterations"
     return SolverOutcome(
         c, converged, steps, np.array(history), message, np.array(harmonic_residuals[-20:])
     )

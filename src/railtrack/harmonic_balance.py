@@ -29,6 +29,7 @@ from .track import Track
 from .train import load_coefficients
 
 __all__ = [
+    "NonFiniteForceError",
     "HarmonicSystem",
     "harmonic_system",
     "default_samples",
@@ -41,6 +42,21 @@ __all__ = [
     "from_real",
     "two_sided",
 ]
+
+
+class NonFiniteForceError(ValueError):
+    """The foundation law returned NaN or inf at some sample of the AFT.
+
+    Attributes
+    ----------
+    displacement : float
+        The w [m] at which it happened; a huge value means the iterate had
+        already diverged, a moderate one that the law itself is at fault.
+    """
+
+    def __init__(self, message: str, displacement: float):
+        super().__init__(message)
+        self.displacement = displacement
 
 
 def default_samples(harmonics: int) -> int:
@@ -116,7 +132,7 @@ def harmonic_system(
     harmonics : int
         m >= 1.
     samples : int, optional
-        AFT samples per period, > 2m; default `default_samples`.
+        AFT samples per period, > 4m; default `default_samples`.
 
     Raises
     ------
@@ -128,9 +144,13 @@ def harmonic_system(
     harmonics = int(harmonics)
     if samples is None:
         samples = default_samples(harmonics)
-    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples <= 2 * harmonics:
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples <= 4 * harmonics:
+        # The Jacobian needs the tangent's harmonics up to 2m, which an
+        # N-point DFT holds only for N > 4m; that is also the rule for an
+        # exact AFT of the cubic law (see `default_samples`).
         raise ValueError(
-            f"samples must be an integer > 2 * harmonics = {2 * harmonics}; got {samples!r}"
+            f"samples must be an integer > 4 * harmonics = {4 * harmonics} (the AFT Jacobian "
+            f"needs the foundation tangent's harmonics up to 2m); got {samples!r}"
         )
     omega = track.fundamental_frequency * np.arange(harmonics + 1)
     coupling, transfer = coupling_and_transfer(track, omega)
@@ -161,9 +181,10 @@ def _checked_force(system: HarmonicSystem, w: np.ndarray, v: np.ndarray) -> np.n
         force = np.broadcast_to(force, w.shape)
     if not np.all(np.isfinite(force)):
         bad = int(np.flatnonzero(~np.isfinite(force))[0])
-        raise ValueError(
+        raise NonFiniteForceError(
             f"the foundation law returned a non-finite force {force[bad]!r} at "
-            f"w = {w[bad]!r} m, w' = {v[bad]!r} m/s"
+            f"w = {w[bad]!r} m, w' = {v[bad]!r} m/s",
+            float(w[bad]),
         )
     return force
 
