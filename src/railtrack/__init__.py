@@ -14,6 +14,7 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.newton`     Newton's method on eq. (17)
 `railtrack.foundations`  eqs. (22), (24), (25): foundation laws
 `railtrack.linear`     Section 4.1, eq. (23): analytic linear solution
+`railtrack.truncation` how many harmonics: the truncation error, m = "auto"
 `railtrack.solve`      the entry point `solve`
 `railtrack.fem`        finite-element ring of the same track (check)
 `railtrack.timedomain` Newmark time integration of that ring (check)
@@ -39,7 +40,7 @@ from .foundations import (
 from .linear import analytic_coefficients, sweep_speeds
 from .receptance import rail_receptance, rail_receptance_lattice_sum
 from .sleeper import rail_coupling
-from .solution import ConvergenceError, Solution
+from .solution import ConvergenceError, Solution, TruncationWarning
 from .solve import METHODS, solve
 from .timedomain import TimeDomainSolution, simulate_time_domain
 from .track import Track
@@ -58,6 +59,7 @@ __all__ = [
     "METHODS",
     "Solution",
     "ConvergenceError",
+    "TruncationWarning",
     "analytic_coefficients",
     "sweep_speeds",
     "rail_receptance",

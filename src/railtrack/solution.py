@@ -12,7 +12,7 @@ from .sleeper import rail_coefficients
 from .track import Track
 from .train import load_coefficients
 
-__all__ = ["Solution", "ConvergenceError", "fourier_series"]
+__all__ = ["Solution", "ConvergenceError", "TruncationWarning", "fourier_series"]
 
 
 def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) -> np.ndarray:
@@ -37,6 +37,14 @@ class ConvergenceError(RuntimeError):
         super().__init__(message)
         self.solution = solution
         self.slow_harmonics = slow_harmonics
+
+
+class TruncationWarning(UserWarning):
+    """An explicit number of harmonics m leaves an estimated truncation error above 1 %.
+
+    The message names m, the estimate and the fix (``harmonics="auto"`` or a
+    larger m).  See `railtrack.truncation`.
+    """
 
 
 @dataclass(frozen=True, eq=False)
@@ -66,6 +74,10 @@ class Solution:
         N0 used by the fixed point, eq. (21).
     samples : int or None
         AFT samples per period.
+    truncation_error : float
+        Estimated error of the sleeper displacement from keeping m harmonics:
+        max over the period of the neglected part over the peak |w| [-]
+        (`railtrack.truncation.truncation_error`); NaN if the solve diverged.
     """
 
     track: Track
@@ -79,6 +91,7 @@ class Solution:
     message: str
     split: int | None = None
     samples: int | None = None
+    truncation_error: float = float("nan")
 
     @property
     def residual(self) -> float:

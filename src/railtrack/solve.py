@@ -11,27 +11,62 @@ packs the outcome into a `Solution`.  Not converging is a result
 
 from __future__ import annotations
 
+import math
 import warnings
 
 import numpy as np
 
-from .fixed_point import SolverOutcome, automatic_split, iterate_fixed_point
+from .arguments import checked_initial, require_count, require_fraction
+from .diagnosis import convergence_error
+from .fixed_point import SolverOutcome, automatic_split, contraction_factors, iterate_fixed_point
+from .foundation_at_rest import check_foundation_at_rest
 from .foundations import as_foundation
-from .harmonic_balance import HarmonicSystem, harmonic_system, residual, residual_norm, two_sided
+from .harmonic_balance import (
+    HarmonicSystem,
+    NonFiniteForceError,
+    harmonic_system,
+    residual,
+    residual_norm,
+    two_sided,
+)
 from .linear import analytic_coefficients
-from .newton import iterate_newton
-from .solution import ConvergenceError, Solution
+from .newton import iterate_newton, linear_guess
+from .conditioning import check_conditioning
+from .solution import Solution, TruncationWarning
 from .track import Track
+from .truncation import (
+    MAX_AUTO_HARMONICS,
+    TAIL_FACTOR,
+    TrackSpectrum,
+    predict_harmonics,
+    tail_coefficients,
+    track_spectrum,
+    truncation_error,
+)
 
-__all__ = ["solve", "METHODS"]
+__all__ = ["solve", "METHODS", "DEFAULT_ACCURACY", "WARN_TRUNCATION"]
+
+DEFAULT_ACCURACY = 1e-3
+"""Relative truncation error (max norm of w over the period / peak) that harmonics="auto" meets."""
+WARN_TRUNCATION = 1e-2
+"""An explicit m whose estimated truncation error exceeds this warns (`TruncationWarning`)."""
+DEFAULT_TOL = 1e-10
+ANALYTIC_ROUND_OFF = 1e-8
+"""Eq. (23) counts as solved when its residual in eq. (17) is finite and below this."""
+AUTO_ROUNDS = 4
+WARM_START_ABOVE = 60
+"""harmonics="auto" reaches a predicted m above this through a solve at m / 4 first:
+Newton on a kinked law with long lifted stretches needs far fewer steps from there."""
 
 
 def _newton(system: HarmonicSystem, tol, max_iterations, split, initial) -> SolverOutcome:
-    return iterate_newton(system, max_iterations or 50, tol, initial)
+    return iterate_newton(system, 100 if max_iterations is None else max_iterations, tol, initial)
 
 
 def _fixed_point(system: HarmonicSystem, tol, max_iterations, split, initial) -> SolverOutcome:
-    return iterate_fixed_point(system, split, max_iterations or 100, tol, initial)
+    return iterate_fixed_point(
+        system, split, 100 if max_iterations is None else max_iterations, tol, initial
+    )
 
 
 def _analytic(system: HarmonicSystem, tol, max_iterations, split, initial) -> SolverOutcome:
@@ -39,81 +74,100 @@ def _analytic(system: HarmonicSystem, tol, max_iterations, split, initial) -> So
     c = full[system.harmonics :]
     current = residual(system, c)
     norm = residual_norm(system, current)
-    return SolverOutcome(
-        c, True, 0, np.array([norm]), f"eq. (23); relative residual {norm:.1e}",
-        np.abs(current)[None, :],
+    solved = bool(np.isfinite(norm) and norm <= ANALYTIC_ROUND_OFF)
+    message = f"eq. (23); relative residual {norm:.1e}" + (
+        "" if solved else f" is not below the round-off level {ANALYTIC_ROUND_OFF:.0e}"
     )
+    return SolverOutcome(c, solved, 0, np.array([norm]), message, np.abs(current)[None, :])
 
 
 METHODS = {"newton": _newton, "fixed-point": _fixed_point, "analytic": _analytic}
 """Method name -> function(system, tol, max_iterations, split, initial) -> SolverOutcome."""
 
 
-def _slow_harmonics(outcome: SolverOutcome) -> tuple[list[int], list[int]]:
-    """Harmonics whose residual fell by < 10 % per step over the last steps, and those that grew."""
-    history = outcome.harmonic_residuals
-    if len(history) < 2:
-        return [], []
-    steps = len(history) - 1
-    with np.errstate(divide="ignore", invalid="ignore"):
-        rate = (history[-1] / history[0]) ** (1.0 / steps)
-    relevant = history[-1] > 1e-3 * history[-1].max()
-    slow = np.flatnonzero(relevant & (rate > 0.9) & (rate <= 1.0))
-    growing = np.flatnonzero(relevant & ~(rate <= 1.0))
-    return slow.tolist(), growing.tolist()
+def _padded(coefficients: np.ndarray, tail: np.ndarray, harmonics: int) -> np.ndarray:
+    """c_0..c_m' from a smaller solution and its estimated tail (a warm start)."""
+    start = np.zeros(harmonics + 1, dtype=complex)
+    known = np.concatenate([coefficients, tail])[: harmonics + 1]
+    start[: len(known)] = known
+    return start
 
 
 def solve(
     track: Track,
     foundation,
-    harmonics: int = 15,
+    harmonics: int | str = "auto",
     method: str = "newton",
     *,
-    tol: float = 1e-10,
+    accuracy: float | None = None,
+    tol: float | None = None,
     max_iterations: int | None = None,
     split: int | str | None = None,
     samples: int | None = None,
     initial: np.ndarray | None = None,
     strict: bool = False,
+    check_foundation: bool = True,
 ) -> Solution:
     """Periodic response of a sleeper on a (nonlinear) foundation, eqs. (12)–(23).
 
     Parameters
     ----------
     track : Track
-        Track and train, e.g. ``Track.paper()``.
+        Track and train, e.g. ``Track.paper()``; scalar fields only.
     foundation : foundation object or callable
         `LinearFoundation`, `BilinearFoundation`, `CubicFoundation`, or any
-        callable ``f(w, v)`` returning the foundation force [N].
-    harmonics : int
-        m, the number of harmonics kept (eq. 19); the paper uses 15.
+        callable ``f(w, v)`` returning the foundation force [N] as an array
+        shaped like w.
+    harmonics : int or "auto"
+        m, the number of harmonics kept (eq. 19).  "auto" (default) picks
+        the smallest m whose estimated truncation error is below `accuracy`
+        (`railtrack.truncation`); the paper uses m = 15.  An explicit m whose
+        estimated error exceeds 1 % warns with a `TruncationWarning`.
     method : {"newton", "fixed-point", "analytic"}
-    tol : float
+    accuracy : float, optional
+        For ``harmonics="auto"``: the largest estimated truncation error of
+        the sleeper displacement, max norm over the period relative to its
+        peak, 0 < accuracy < 1 (default 1e-3).
+    tol : float, optional
         Converged when the relative residual ``||R|| / ||F||`` of eq. (17)
-        is <= tol.  Ignored by "analytic".
+        is <= tol, 0 < tol < 1 (default 1e-10).  Not used by "analytic",
+        which is exact up to round-off.
     max_iterations : int, optional
-        Newton steps (default 50) or fixed-point iterations k (default 100,
-        the paper's choice).
+        Newton steps (default 100) or fixed-point iterations k (default 100,
+        the paper's choice); 0 evaluates the starting point only.
     split : int or "auto", optional
         N0 of eq. (21), fixed point only.  Default (None): m, all harmonics
         in the first branch of eq. (21).  "auto": the N0 with the smallest
         largest contraction factor (`railtrack.fixed_point.automatic_split`).
     samples : int, optional
-        AFT samples per period (default `railtrack.harmonic_balance.default_samples`).
+        AFT samples per period, > 4m (default
+        `railtrack.harmonic_balance.default_samples`); needs an explicit m.
     initial : ndarray, shape (m+1,), optional
-        Starting c_0..c_m for the iterative methods.
+        Starting c_0..c_m for the iterative methods (finite, c_0 real); needs
+        an explicit m.
     strict : bool
         Raise `ConvergenceError` instead of returning an unconverged solution.
+    check_foundation : bool
+        Refuse a law with negative stiffness or damping at rest
+        (`railtrack.foundations.check_foundation_at_rest`).  A softening law
+        whose stiffness at rest is positive passes; to solve a law that is
+        deliberately unstable at rest, pass False, and check the answer with
+        `railtrack.simulate_time_domain`.
 
     Returns
     -------
     Solution
+        With ``converged`` and ``truncation_error``.  A diverging iteration
+        is reported as ``converged=False`` with a message saying so.
 
     Raises
     ------
     ValueError
-        Unknown method, bad harmonics, samples, tol or split, or a foundation
-        law that returns non-finite forces.
+        Unknown method, bad harmonics, accuracy, samples, tol, split or
+        initial, a law that is unstable at rest, or one that returns
+        non-finite forces at the start.
+    TypeError
+        A track that is not a `Track`, or a foundation that is not a law.
     ConvergenceError
         Only with ``strict=True``.
 
@@ -121,35 +175,84 @@ def solve(
     --------
     >>> from railtrack import Track, CubicFoundation, solve
     >>> solution = solve(Track.paper(), CubicFoundation.paper(epsilon=0.8))
-    >>> solution.converged
-    True
+    >>> solution.converged, solution.truncation_error < 1e-3
+    (True, True)
     >>> w = solution.sleeper_displacement([0.0, 0.1])    # metres, w < 0 is down
     """
     if method not in METHODS:
         raise ValueError(f"method must be one of {sorted(METHODS)}; got {method!r}")
-    if not np.isfinite(tol) or tol < 0:
-        raise ValueError(f"tol must be a finite number >= 0; got {tol!r}")
-    if max_iterations is not None and (
-        isinstance(max_iterations, bool) or not isinstance(max_iterations, (int, np.integer))
-        or max_iterations < 0
-    ):
-        raise ValueError(f"max_iterations must be an integer >= 0; got {max_iterations!r}")
-    foundation = as_foundation(foundation)
-    system = harmonic_system(track, foundation, harmonics, samples)
+    if not isinstance(track, Track):
+        raise TypeError(f"track must be a railtrack.Track; got {type(track).__name__}")
+    batched = [f for f, v in vars(track).items() if np.ndim(v) > 0]
+    if batched:
+        raise ValueError(
+            f"solve takes a track with scalar fields; {batched} are arrays "
+            "(for a batch of linear tracks use railtrack.sweep_speeds)"
+        )
+    check_conditioning(track)
+    automatic = isinstance(harmonics, str) and harmonics == "auto"
+    if not automatic:
+        require_count("harmonics", harmonics, 1)
+    if method == "analytic":
+        ignored = [n for n, v in (("tol", tol), ("max_iterations", max_iterations),
+                                  ("initial", initial)) if v is not None]
+        if ignored:
+            warnings.warn(f"{', '.join(ignored)} not used by method='analytic' (eq. 23 is exact)")
+    if accuracy is not None and not automatic:
+        warnings.warn("accuracy is used by harmonics='auto' only; ignored for an explicit m")
+    accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy", accuracy)
+    tol = DEFAULT_TOL if tol is None else require_fraction("tol", tol)
+    if max_iterations is not None:
+        max_iterations = require_count("max_iterations", max_iterations, 0)
+    if automatic and (samples is not None or initial is not None):
+        raise ValueError("samples and initial need an explicit harmonics=m; 'auto' chooses m itself")
     if method != "fixed-point" and split is not None:
         warnings.warn(f"split is used by method='fixed-point' only; ignored by {method!r}")
-    if split is None:
-        split = system.harmonics
-    elif split == "auto":
-        split = automatic_split(system)
-    elif isinstance(split, bool) or not isinstance(split, (int, np.integer)) or not 0 <= split <= harmonics:
-        raise ValueError(f"split (N0) must be 'auto' or an integer in 0..{harmonics}; got {split!r}")
-    if initial is not None and np.shape(initial) != (system.harmonics + 1,):
-        raise ValueError(
-            f"initial must have shape ({system.harmonics + 1},) (c_0..c_m); got {np.shape(initial)}"
-        )
+    if split is not None and split != "auto":
+        require_count("split (N0)", split, 0)
+    foundation = as_foundation(foundation)
+    if check_foundation:
+        check_foundation_at_rest(foundation, float(track.pad_stiffness), float(track.pad_damping))
 
-    outcome = METHODS[method](system, tol, max_iterations, split, initial)
+    if automatic:
+        target, spectrum = predict_harmonics(track, foundation, accuracy / 2)
+        coarse = method == "analytic" or target <= WARM_START_ABOVE
+        m = target if coarse else max(15, target // 4)
+        system = spectrum.system(track, foundation, m)
+    else:
+        m = target = int(harmonics)
+        system = harmonic_system(track, foundation, m, samples)
+        spectrum = track_spectrum(track, TAIL_FACTOR * m)
+        initial = None if initial is None else checked_initial(initial, m)
+
+    iterations = 0
+    for _round in range(AUTO_ROUNDS + 1):
+        outcome, used_split, note = _run(method, system, tol, max_iterations, split, initial)
+        iterations += outcome.iterations
+        estimate = _estimate(system, outcome, spectrum)
+        if not automatic or not outcome.converged:
+            break
+        if m < target:
+            grown = target
+        elif estimate <= accuracy or m >= MAX_AUTO_HARMONICS:
+            break
+        else:
+            grown = min(MAX_AUTO_HARMONICS, math.ceil(m * max(1.5, (estimate / accuracy) ** 0.5)))
+        tail = tail_coefficients(system, outcome.coefficients, spectrum)
+        if spectrum.upto < TAIL_FACTOR * grown:
+            spectrum = track_spectrum(track, TAIL_FACTOR * grown)
+        initial = _padded(outcome.coefficients, tail, grown) if method != "analytic" else None
+        m = target = grown
+        system = spectrum.system(track, foundation, grown)
+
+    message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
+    if outcome.converged and np.isfinite(estimate) and estimate > (accuracy if automatic else WARN_TRUNCATION):
+        fix = (f"harmonics='auto' picks m = {predict_harmonics(track, foundation, DEFAULT_ACCURACY / 2)[0]}"
+               if not automatic else f"the largest m that 'auto' takes is {MAX_AUTO_HARMONICS}")
+        warnings.warn(TruncationWarning(
+            f"harmonics={m}: the estimated truncation error is {estimate:.1%} of the peak "
+            f"sleeper displacement; {fix} (pass a larger harmonics or use 'auto')"
+        ), stacklevel=2)
     solution = Solution(
         track=track,
         foundation=foundation,
@@ -157,24 +260,46 @@ def solve(
         coefficients=two_sided(outcome.coefficients),
         method=method,
         converged=outcome.converged,
-        iterations=outcome.iterations,
+        iterations=iterations,
         residual_history=outcome.residual_history,
-        message=outcome.message,
-        split=int(split) if method == "fixed-point" else None,
+        message=message,
+        split=used_split,
         samples=system.samples,
+        truncation_error=estimate,
     )
     if strict and not solution.converged:
-        slow, growing = _slow_harmonics(outcome)
-        advice = (
-            "raise max_iterations, try split='auto', or use method='newton'"
-            if method == "fixed-point"
-            else "raise max_iterations, give a better initial guess, or raise tol"
-        )
-        raise ConvergenceError(
-            f"{method} did not converge: {outcome.message}. "
-            f"Slow harmonics (residual falling < 10 %/step): {slow or 'none'}; "
-            f"diverging harmonics: {growing or 'none'}. To fix: {advice}.",
-            solution,
-            slow + growing,
-        )
+        raise convergence_error(method, outcome, solution, message)
     return solution
+
+
+def _run(method, system, tol, max_iterations, split, initial):
+    """Resolve the split for this m, run the method; (outcome, split used, note on the split)."""
+    note, used = "", None
+    if method == "fixed-point":
+        if split is None:
+            used = system.harmonics
+        elif split == "auto":
+            # Factors about Newton's starting guess, not the law at rest: for a
+            # hardening law under a heavy load the two differ by orders.
+            start = linear_guess(system) if initial is None else initial
+            used = automatic_split(system, start)
+            worst = float(contraction_factors(system, used, start).max())
+            if worst >= 1:
+                note = (f"no split N0 in 0..{system.harmonics} makes every contraction factor "
+                        f"of eq. (21) < 1 (the best, N0 = {used}, has {worst:.3g})")
+        elif split > system.harmonics:
+            raise ValueError(f"split (N0) must be 'auto' or an integer in 0..{system.harmonics}; got {split!r}")
+        else:
+            used = int(split)
+    return METHODS[method](system, tol, max_iterations, used, initial), used, note
+
+
+def _estimate(system: HarmonicSystem, outcome: SolverOutcome, spectrum: TrackSpectrum) -> float:
+    """`truncation_error` of an outcome; NaN when it cannot be evaluated (a diverged iterate)."""
+    if not np.all(np.isfinite(outcome.coefficients)):
+        return float("nan")
+    try:
+        with np.errstate(over="ignore", invalid="ignore"):
+            return truncation_error(system, outcome.coefficients, spectrum)
+    except NonFiniteForceError:
+        return float("nan")
