@@ -76,10 +76,14 @@ def test_figure3_newton_equals_eq23(fig3):
 def test_figure3_fixed_point_approaches_eq23_geometrically(fig3):
     errors = fig3.errors()
     assert np.all(np.diff(errors) < 0), errors
-    assert errors[fig3.values.index(400)] < 1e-12 * PEAK_SCALE
+    # k = 400 stops once the residual reaches 1e-10 (at 236 steps), so its
+    # error is that of a converged iterate, not of 400 steps.
+    longest = fig3.solutions[fig3.values.index(400)]
+    assert longest.converged and longest.iterations < 400
+    assert errors[fig3.values.index(400)] < 1e-9 * PEAK_SCALE
     # the mean (harmonic 0) after k steps from zero: c0 (1 - q^k), q = 1 - k2/k1
     q = 1 - LINEAR.stiffness / TRACK.pad_stiffness
-    expected = np.array([q**k for k in fig3.values])
+    expected = np.array([q**s.iterations for s in fig3.solutions])
     np.testing.assert_allclose(fig3.mean_errors(), expected, rtol=1e-6, atol=1e-14)
 
 

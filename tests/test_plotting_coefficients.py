@@ -76,7 +76,7 @@ def test_table_lists_every_harmonic_with_rounded_values():
 
 
 def test_aft_plot_shows_the_samples_and_the_harmonics():
-    solution = rt.solve(TRACK, rt.CubicFoundation.paper(0.8))
+    solution = rt.solve(TRACK, rt.CubicFoundation.paper(0.8), 15)
     fig = pc.plot_aft(solution, samples=128)
     system = harmonic_system(TRACK, solution.foundation, 15, 128)
     c = solution.coefficients[15:]
@@ -114,8 +114,8 @@ def test_convergence_plot_has_one_line_per_method_with_the_solve_history():
         lines = {line.get_gid(): line for line in ax.get_lines() if line.get_gid()}
         assert sorted(lines) == ["fixed-point", "newton"]
         expected = {
-            "fixed-point": rt.solve(TRACK, law, method="fixed-point", max_iterations=3000),
-            "newton": rt.solve(TRACK, law, method="newton"),
+            "fixed-point": rt.solve(TRACK, law, 15, method="fixed-point", max_iterations=3000),
+            "newton": rt.solve(TRACK, law, 15, method="newton"),
         }
         for method, solution in expected.items():
             np.testing.assert_array_equal(lines[method].get_ydata(), solution.residual_history)

@@ -49,12 +49,12 @@ def test_mean_displacement_is_static_balance(analytic):
     expected = -2 * TRACK.wheel_load * TRACK.sleeper_spacing / (TRACK.wagon_length * LINEAR.stiffness)
     assert analytic[15].real == pytest.approx(expected, rel=1e-13)
     assert analytic[15].imag == 0.0
-    assert solve(TRACK, LINEAR).mean_displacement == pytest.approx(expected, rel=1e-10)
+    assert solve(TRACK, LINEAR, 15).mean_displacement == pytest.approx(expected, rel=1e-10)
 
 
 @pytest.mark.parametrize("method", ["newton", "fixed-point"])
 def test_iterative_methods_reproduce_eq23(method, analytic):
-    solution = solve(TRACK, LINEAR, method=method, max_iterations=400)
+    solution = solve(TRACK, LINEAR, 15, method=method, max_iterations=400)
     assert solution.converged
     np.testing.assert_allclose(solution.coefficients, analytic, rtol=0, atol=1e-9 * abs(analytic[15]))
 
@@ -69,30 +69,30 @@ def test_iterative_methods_reproduce_eq23(method, analytic):
 )
 @pytest.mark.parametrize("method", ["newton", "fixed-point"])
 def test_nonlinear_laws_reduce_to_linear(law, method, analytic):
-    solution = solve(TRACK, law, method=method, max_iterations=400)
+    solution = solve(TRACK, law, 15, method=method, max_iterations=400)
     assert solution.converged
     np.testing.assert_allclose(solution.coefficients, analytic, rtol=0, atol=1e-9 * abs(analytic[15]))
 
 
 def test_linear_response_scales_with_load_and_cubic_does_not():
     heavy = TRACK.replace(wheel_load=2 * TRACK.wheel_load)
-    linear = solve(TRACK, LINEAR).coefficients
-    np.testing.assert_allclose(solve(heavy, LINEAR).coefficients, 2 * linear, rtol=1e-9, atol=1e-15)
+    linear = solve(TRACK, LINEAR, 15).coefficients
+    np.testing.assert_allclose(solve(heavy, LINEAR, 15).coefficients, 2 * linear, rtol=1e-9, atol=1e-15)
     cubic = CubicFoundation.paper(0.8)
-    light, double = solve(TRACK, cubic), solve(heavy, cubic)
+    light, double = solve(TRACK, cubic, 15), solve(heavy, cubic, 15)
     ratio = double.mean_displacement / light.mean_displacement
     assert 1.2 < ratio < 1.95  # hardening: doubling the load less than doubles the mean
 
 
 def test_hardening_reduces_the_peak():
-    peaks = [solve(TRACK, CubicFoundation.paper(eps)).one_period(800)[1].min() for eps in (0, 0.4, 0.8)]
+    peaks = [solve(TRACK, CubicFoundation.paper(eps), 15).one_period(800)[1].min() for eps in (0, 0.4, 0.8)]
     assert peaks[0] < peaks[1] < peaks[2] < 0
 
 
 @pytest.mark.parametrize("name", sorted(NONLINEAR))
 def test_newton_converges_and_fine_grid_residual_is_small(name):
     law = NONLINEAR[name]
-    solution = solve(TRACK, law, strict=True)
+    solution = solve(TRACK, law, 15, strict=True)
     assert solution.residual <= 1e-10
     assert solution.iterations <= 10
     # eq. (17) re-evaluated with 16x more AFT samples: only aliasing remains
@@ -103,14 +103,14 @@ def test_newton_converges_and_fine_grid_residual_is_small(name):
 @pytest.mark.parametrize("name", sorted(NONLINEAR))
 def test_fixed_point_agrees_with_newton(name):
     law = NONLINEAR[name]
-    newton = solve(TRACK, law)
-    fixed = solve(TRACK, law, method="fixed-point", max_iterations=3000, tol=1e-9)
+    newton = solve(TRACK, law, 15)
+    fixed = solve(TRACK, law, 15, method="fixed-point", max_iterations=3000, tol=1e-9)
     assert fixed.converged
     np.testing.assert_allclose(fixed.coefficients, newton.coefficients, rtol=0, atol=1e-8 * 1e-3)
 
 
 def test_tensionless_foundation_never_pulls():
-    solution = solve(TRACK, BilinearFoundation.paper(0.0))
+    solution = solve(TRACK, BilinearFoundation.paper(0.0), 15)
     t = np.linspace(0, TRACK.period, 2000, endpoint=False)
     w = solution.sleeper_displacement(t)
     assert w.max() > 0  # the sleeper does lift off ...
@@ -164,7 +164,7 @@ def test_linear_fixed_point_error_shrinks_by_the_predicted_factor(analytic):
     factors = contraction_factors(system, 15)
     errors = []
     for k in (3, 4):  # few steps, so that even the fast harmonics are above round-off
-        c = solve(TRACK, LINEAR, method="fixed-point", max_iterations=k, tol=0).coefficients
+        c = solve(TRACK, LINEAR, 15, method="fixed-point", max_iterations=k).coefficients
         errors.append(np.abs(c[15:] - analytic[15:]))
     measured = errors[1] / errors[0]
     # where the load vanishes (n = 3, 9, 15) the error is zero from the start
@@ -178,7 +178,7 @@ def test_automatic_split_gives_a_convergent_iteration():
     system = harmonic_system(TRACK, LINEAR, 15)
     assert contraction_factors(system, automatic_split(system)).max() < 1
     assert contraction_factors(system, 0).max() > 1  # the small-N0 choice diverges
-    diverging = solve(TRACK, LINEAR, method="fixed-point", split=0, max_iterations=50)
+    diverging = solve(TRACK, LINEAR, 15, method="fixed-point", split=0, max_iterations=50)
     assert not diverging.converged
     assert diverging.residual_history[-1] > diverging.residual_history[0]
 
@@ -187,12 +187,12 @@ def test_sweep_equals_individual_solves():
     speeds = np.array([20.0, 45.0, 70.0])
     batch = sweep_speeds(TRACK, LINEAR, speeds, 15)
     for speed, row in zip(speeds, batch):
-        single = solve(Track.paper(speed=speed), LINEAR, method="analytic").coefficients
+        single = solve(Track.paper(speed=speed), LINEAR, 15, method="analytic").coefficients
         np.testing.assert_allclose(row, single, rtol=1e-12, atol=1e-18)
 
 
 def test_time_histories_are_consistent():
-    solution = solve(TRACK, CubicFoundation.paper(0.8))
+    solution = solve(TRACK, CubicFoundation.paper(0.8), 15)
     t = np.linspace(0, TRACK.period, 512, endpoint=False)
     w = solution.sleeper_displacement(t)
     assert w.mean() == pytest.approx(solution.mean_displacement, rel=1e-12)
@@ -209,7 +209,7 @@ def test_time_histories_are_consistent():
 
 
 def test_peak_is_near_the_wheels():
-    solution = solve(TRACK, LINEAR, method="analytic")
+    solution = solve(TRACK, LINEAR, 15, method="analytic")
     t = np.linspace(0, TRACK.period, 4000, endpoint=False)
     t_min = t[np.argmin(solution.sleeper_displacement(t))]
     # the deepest point falls between the two wheel passages (0 and D/v), delayed by the dynamics
@@ -220,9 +220,9 @@ def test_peak_is_near_the_wheels():
 def test_factor_from_the_solution_estimates_the_bilinear_rate_better(ratio):
     law = BilinearFoundation.paper(ratio)
     system = harmonic_system(TRACK, law, 15)
-    history = solve(TRACK, law, method="fixed-point", max_iterations=300, tol=0).residual_history
+    history = solve(TRACK, law, 15, method="fixed-point", max_iterations=300).residual_history
     observed = (history[300] / history[200]) ** (1 / 100)  # asymptotic rate of eq. (21)
     at_rest = contraction_factors(system, 15)[0]
-    along_solution = contraction_factors(system, 15, solve(TRACK, law).coefficients[15:])[0]
+    along_solution = contraction_factors(system, 15, solve(TRACK, law, 15).coefficients[15:])[0]
     assert abs(along_solution - observed) < abs(at_rest - observed)
     assert at_rest < along_solution < observed  # tension is softer: slower than k2+ predicts

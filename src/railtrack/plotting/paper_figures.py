@@ -15,7 +15,8 @@ the axes.  The defaults are the paper's parameters:
 * m = 15 harmonics and k = 100 iterations unless the figure varies them.
 
 The paper's curves come from its fixed-point iteration, eq. (21), run for
-exactly k steps from c = 0 (``method="fixed-point", tol=0``).  Every
+k steps from c = 0 (``method="fixed-point", max_iterations=k``; none of
+the paper's cases reaches the tolerance 1e-10 sooner).  Every
 figure also carries a reference curve that has converged (Newton's method
 to a relative residual of 1e-10, or eq. 23 for the linear law), drawn
 dashed black, so that the reader sees what the iteration is tending to.
