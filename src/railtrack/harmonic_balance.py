@@ -38,6 +38,7 @@ __all__ = [
     "residual",
     "residual_norm",
     "residual_jacobian",
+    "require_jacobian_samples",
     "to_real",
     "from_real",
     "two_sided",
@@ -132,7 +133,9 @@ def harmonic_system(
     harmonics : int
         m >= 1.
     samples : int, optional
-        AFT samples per period, > 4m; default `default_samples`.
+        AFT samples per period, > 2m for the residual; the Jacobian
+        (`residual_jacobian`, used by Newton) needs > 4m.  Default
+        `default_samples`.
 
     Raises
     ------
@@ -144,13 +147,9 @@ def harmonic_system(
     harmonics = int(harmonics)
     if samples is None:
         samples = default_samples(harmonics)
-    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples <= 4 * harmonics:
-        # The Jacobian needs the tangent's harmonics up to 2m, which an
-        # N-point DFT holds only for N > 4m; that is also the rule for an
-        # exact AFT of the cubic law (see `default_samples`).
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples <= 2 * harmonics:
         raise ValueError(
-            f"samples must be an integer > 4 * harmonics = {4 * harmonics} (the AFT Jacobian "
-            f"needs the foundation tangent's harmonics up to 2m); got {samples!r}"
+            f"samples must be an integer > 2 * harmonics = {2 * harmonics}; got {samples!r}"
         )
     omega = track.fundamental_frequency * np.arange(harmonics + 1)
     coupling, transfer = coupling_and_transfer(track, omega)
@@ -164,6 +163,20 @@ def harmonic_system(
         load=load_coefficients(track, omega, transfer),
         operator=sleeper_operator(track, omega) - coupling,
     )
+
+
+def require_jacobian_samples(samples: int, harmonics: int) -> None:
+    """Raise ``ValueError`` unless N > 4m, the rule for the AFT Jacobian.
+
+    The Jacobian needs the foundation tangent's harmonics up to 2m, which an
+    N-point DFT holds only for N > 4m; that is also the rule for an exact
+    AFT of the cubic law (see `default_samples`).
+    """
+    if samples <= 4 * harmonics:
+        raise ValueError(
+            f"samples must be an integer > 4 * harmonics = {4 * harmonics} (the AFT Jacobian "
+            f"needs the foundation tangent's harmonics up to 2m); got {samples!r}"
+        )
 
 
 def synthesize(system: HarmonicSystem, coefficients: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -262,6 +275,7 @@ def residual_jacobian(system: HarmonicSystem, coefficients: np.ndarray) -> np.nd
     Jacobian.
     """
     m = system.harmonics
+    require_jacobian_samples(system.samples, m)
     w, v = synthesize(system, coefficients)
     _checked_force(system, w, v)
     stiffness, damping = system.foundation.tangent(w, v)

@@ -23,8 +23,8 @@ from .foundation_at_rest import check_foundation_at_rest
 from .foundations import as_foundation
 from .harmonic_balance import (
     HarmonicSystem,
-    NonFiniteForceError,
     harmonic_system,
+    require_jacobian_samples,
     residual,
     residual_norm,
     two_sided,
@@ -37,11 +37,11 @@ from .track import Track
 from .truncation import (
     MAX_AUTO_HARMONICS,
     TAIL_FACTOR,
-    TrackSpectrum,
+    estimate_of,
+    padded,
     predict_harmonics,
     tail_coefficients,
     track_spectrum,
-    truncation_error,
 )
 
 __all__ = ["solve", "METHODS", "DEFAULT_ACCURACY", "WARN_TRUNCATION"]
@@ -83,14 +83,6 @@ def _analytic(system: HarmonicSystem, tol, max_iterations, split, initial) -> So
 
 METHODS = {"newton": _newton, "fixed-point": _fixed_point, "analytic": _analytic}
 """Method name -> function(system, tol, max_iterations, split, initial) -> SolverOutcome."""
-
-
-def _padded(coefficients: np.ndarray, tail: np.ndarray, harmonics: int) -> np.ndarray:
-    """c_0..c_m' from a smaller solution and its estimated tail (a warm start)."""
-    start = np.zeros(harmonics + 1, dtype=complex)
-    known = np.concatenate([coefficients, tail])[: harmonics + 1]
-    start[: len(known)] = known
-    return start
 
 
 def solve(
@@ -222,6 +214,7 @@ def solve(
     else:
         m = target = int(harmonics)
         system = harmonic_system(track, foundation, m, samples)
+        require_jacobian_samples(system.samples, m)
         spectrum = track_spectrum(track, TAIL_FACTOR * m)
         initial = None if initial is None else checked_initial(initial, m)
 
@@ -229,7 +222,7 @@ def solve(
     for _round in range(AUTO_ROUNDS + 1):
         outcome, used_split, note = _run(method, system, tol, max_iterations, split, initial)
         iterations += outcome.iterations
-        estimate = _estimate(system, outcome, spectrum)
+        estimate = estimate_of(system, outcome.coefficients, spectrum)
         if not automatic or not outcome.converged:
             break
         if m < target:
@@ -241,7 +234,7 @@ def solve(
         tail = tail_coefficients(system, outcome.coefficients, spectrum)
         if spectrum.upto < TAIL_FACTOR * grown:
             spectrum = track_spectrum(track, TAIL_FACTOR * grown)
-        initial = _padded(outcome.coefficients, tail, grown) if method != "analytic" else None
+        initial = padded(outcome.coefficients, tail, grown) if method != "analytic" else None
         m = target = grown
         system = spectrum.system(track, foundation, grown)
 
@@ -292,14 +285,3 @@ def _run(method, system, tol, max_iterations, split, initial):
         else:
             used = int(split)
     return METHODS[method](system, tol, max_iterations, used, initial), used, note
-
-
-def _estimate(system: HarmonicSystem, outcome: SolverOutcome, spectrum: TrackSpectrum) -> float:
-    """`truncation_error` of an outcome; NaN when it cannot be evaluated (a diverged iterate)."""
-    if not np.all(np.isfinite(outcome.coefficients)):
-        return float("nan")
-    try:
-        with np.errstate(over="ignore", invalid="ignore"):
-            return truncation_error(system, outcome.coefficients, spectrum)
-    except NonFiniteForceError:
-        return float("nan")

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .foundation_at_rest import static_deflection
-from .harmonic_balance import HarmonicSystem, default_samples, synthesize
+from .harmonic_balance import HarmonicSystem, NonFiniteForceError, default_samples, synthesize
 from .sleeper import coupling_and_transfer, sleeper_operator
 from .track import Track
 from .train import load_coefficients
@@ -47,6 +47,8 @@ __all__ = [
     "truncation_error",
     "predict_harmonics",
     "MAX_AUTO_HARMONICS",
+    "estimate_of",
+    "padded",
 ]
 
 TAIL_FACTOR = 8
@@ -222,3 +224,22 @@ def predict_harmonics(track: Track, foundation, accuracy: float) -> tuple[int, T
         else:
             low = middle
     return max(1, high), spectrum
+
+
+def estimate_of(system: HarmonicSystem, coefficients: np.ndarray, spectrum: TrackSpectrum) -> float:
+    """`truncation_error`, or NaN when it cannot be evaluated (a diverged iterate)."""
+    if not np.all(np.isfinite(coefficients)):
+        return float("nan")
+    try:
+        with np.errstate(over="ignore", invalid="ignore"):
+            return truncation_error(system, coefficients, spectrum)
+    except NonFiniteForceError:
+        return float("nan")
+
+
+def padded(coefficients: np.ndarray, tail: np.ndarray, harmonics: int) -> np.ndarray:
+    """c_0..c_m' from a smaller solution and its estimated tail: a warm start for m' harmonics."""
+    start = np.zeros(harmonics + 1, dtype=complex)
+    known = np.concatenate([coefficients, tail])[: harmonics + 1]
+    start[: len(known)] = known
+    return start
