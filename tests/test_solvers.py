@@ -226,3 +226,12 @@ def test_factor_from_the_solution_estimates_the_bilinear_rate_better(ratio):
     along_solution = contraction_factors(system, 15, solve(TRACK, law, 15).coefficients[15:])[0]
     assert abs(along_solution - observed) < abs(at_rest - observed)
     assert at_rest < along_solution < observed  # tension is softer: slower than k2+ predicts
+
+
+def test_sweep_extremes_equal_the_extremes_of_single_solves():
+    from railtrack import sweep_extremes
+    speeds = [20.0, 45.0, 300.0]
+    low, high = sweep_extremes(TRACK, LINEAR, speeds, 60)
+    for v, lo, hi in zip(speeds, low, high):
+        w = solve(Track.paper(speed=v), LINEAR, 60, method="analytic").one_period(2048)[1]
+        assert lo == pytest.approx(w.min(), rel=1e-12) and hi == pytest.approx(w.max(), rel=1e-12)

@@ -18,6 +18,8 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.solve`      the entry point `solve`
 `railtrack.fem`        finite-element ring of the same track (check)
 `railtrack.timedomain` Newmark time integration of that ring (check)
+`railtrack.timestep`   the time steps it needs and its time-step error
+`railtrack.runcost`    its memory and run time, estimated before it starts
 =====================  ==============================================
 
 SI units throughout.  w is positive upward (the train pushes it negative);
@@ -37,12 +39,15 @@ from .foundations import (
     LinearFoundation,
     as_foundation,
 )
-from .linear import analytic_coefficients, sweep_speeds
+from .linear import analytic_coefficients, sweep_extremes, sweep_speeds
 from .receptance import rail_receptance, rail_receptance_lattice_sum
 from .sleeper import rail_coupling
 from .solution import ConvergenceError, Solution, TruncationWarning
 from .solve import METHODS, solve
+from .newmark import NonFiniteLawError
+from .runcost import LongRunWarning
 from .timedomain import TimeDomainSolution, simulate_time_domain
+from .timestep import TimeStepWarning, estimate_step_error
 from .track import Track
 from .train import load_coefficients
 
@@ -62,10 +67,15 @@ __all__ = [
     "TruncationWarning",
     "analytic_coefficients",
     "sweep_speeds",
+    "sweep_extremes",
     "rail_receptance",
     "rail_receptance_lattice_sum",
     "rail_coupling",
     "load_coefficients",
     "simulate_time_domain",
     "TimeDomainSolution",
+    "TimeStepWarning",
+    "LongRunWarning",
+    "NonFiniteLawError",
+    "estimate_step_error",
 ]
