@@ -3,8 +3,10 @@
 Run with ``make bench``.  Prints Markdown tables: the machine, the median
 wall time of each solve (median over several runs, each run timing a batch
 of repeated solves), and the iterations each method needs to reach a
-relative residual of 1e-10 of eq. (17).  Times are wall-clock on whatever
-else the machine is doing; the iteration counts are exact.
+relative residual of 1e-10 of eq. (17).  Each solve includes its
+truncation estimate; "auto" also picks m (railtrack.truncation).  Times are
+wall-clock on whatever else the machine is doing; the iteration counts are
+exact.
 """
 
 from __future__ import annotations
@@ -41,6 +43,25 @@ def median_time(function, repeat: int) -> float:
     return statistics.median(runs)
 
 
+def median_ratio(slow, fast, repeat: int) -> float:
+    """Median over RUNS runs of time(slow) / time(fast), the two timed back to back.
+
+    Timing both in the same run cancels the drift of a shared machine's
+    speed, which moves separate medians by tens of per cent.
+    """
+    slow(), fast()
+    ratios = []
+    for _ in range(RUNS):
+        times = []
+        for function in (slow, fast):
+            start = time.perf_counter()
+            for _ in range(repeat):
+                function()
+            times.append(time.perf_counter() - start)
+        ratios.append(times[0] / times[1])
+    return statistics.median(ratios)
+
+
 def machine() -> str:
     cpu = platform.processor() or "unknown CPU"
     try:
@@ -57,32 +78,41 @@ def machine() -> str:
 def main() -> None:
     track = rt.Track.paper()
     print(f"Machine: {machine()}\n")
-    print(f"m = {HARMONICS} harmonics, Table 1 track, median of {RUNS} runs.\n")
-    print("| case | Newton solve [ms] | fixed point, k = 100 [ms] "
-          "| Newton steps to 1e-10 | fixed-point iterations to 1e-10 (N0 = m) |")
-    print("|---|---:|---:|---:|---:|")
+    print(f"m = {HARMONICS} harmonics unless 'auto', Table 1 track, median of {RUNS} runs.\n")
+    print("| case | Newton, m = 15 [ms] | Newton, m = 'auto' [ms] (m chosen) "
+          "| auto / m = 15 (timed together) "
+          "| fixed point, k = 100 [ms] | Newton steps to 1e-10 | fixed-point iterations "
+          "to 1e-10 (N0 = m) |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
     for name, law in CASES.items():
-        newton_time = median_time(lambda: rt.solve(track, law), 50)
+        newton_time = median_time(lambda: rt.solve(track, law, HARMONICS), 50)
+        auto_time = median_time(lambda: rt.solve(track, law), 50)
+        auto = rt.solve(track, law)
+        ratio = median_ratio(lambda: rt.solve(track, law), lambda: rt.solve(track, law, HARMONICS), 50)
+        # k = 100 steps: none of these cases reaches tol = 1e-10 sooner
         fixed_time = median_time(
-            lambda: rt.solve(track, law, method="fixed-point", max_iterations=100, tol=0), 5
+            lambda: rt.solve(track, law, HARMONICS, method="fixed-point", max_iterations=100), 5
         )
-        newton = rt.solve(track, law, tol=1e-10)
-        fixed = rt.solve(track, law, method="fixed-point", tol=1e-10, max_iterations=5000)
+        newton = rt.solve(track, law, HARMONICS, tol=1e-10)
+        fixed = rt.solve(track, law, HARMONICS, method="fixed-point", tol=1e-10,
+                         max_iterations=5000)
         fixed_steps = str(fixed.iterations) if fixed.converged else f"> {fixed.iterations}"
-        print(f"| {name} | {newton_time * 1e3:.2f} | {fixed_time * 1e3:.2f} "
+        print(f"| {name} | {newton_time * 1e3:.2f} | {auto_time * 1e3:.2f} ({auto.harmonics}) "
+              f"| {ratio:.2f} | {fixed_time * 1e3:.2f} "
               f"| {newton.iterations} | {fixed_steps} |")
 
     speeds = np.linspace(10.0, 100.0, 1000)
     linear = CASES["linear"]
     sweep = median_time(lambda: rt.sweep_speeds(track, linear, speeds, HARMONICS), 5)
     loop = median_time(
-        lambda: [rt.solve(track.replace(speed=s), linear, method="analytic") for s in speeds[:100]], 1
+        lambda: [rt.solve(track.replace(speed=s), linear, HARMONICS, method="analytic")
+                 for s in speeds[:100]], 1
     ) * 10
     print()
     print("| linear sweep over 1,000 train speeds (eq. 23) | time [ms] |")
     print("|---|---:|")
     print(f"| vectorised `rt.sweep_speeds` | {sweep * 1e3:.1f} |")
-    print(f"| loop of `rt.solve(..., method='analytic')` (100 timed, x10) | {loop * 1e3:.0f} |")
+    print(f"| loop of `rt.solve(..., 15, method='analytic')` (100 timed, x10) | {loop * 1e3:.0f} |")
 
 
 if __name__ == "__main__":

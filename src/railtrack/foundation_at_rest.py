@@ -22,7 +22,8 @@ def static_deflection(foundation: Foundation, force: float) -> float:
 
     Used for the mean of the starting guess: in the mean of eq. (17) the pad
     and rail terms cancel (P_0 = omega_0^2), so the foundation carries the
-    whole static load 2 Q L / H whatever the law.  Solved by bracketing and
+    whole static load 2 Q L / H whatever the law.  Solved by Newton's
+    method from the linear estimate, and if that fails by bracketing and
     Brent's method, so it also works for a law with no stiffness at rest
     (a pure cubic).
 
@@ -47,9 +48,22 @@ def static_deflection(foundation: Foundation, force: float) -> float:
         return float(np.asarray(foundation.force(np.array([w]), np.zeros(1)))[0]) + force
 
     stiffness, _ = foundation.linearization()
+    guess = force / stiffness if stiffness > 0 else np.inf
+    # Newton from the linear estimate settles the usual laws in a step or
+    # a few (exactly in one for a linear law); brackets are the fallback.
+    w = -guess if guess < 1.0 else -1e-3
+    for _ in range(8):
+        value = balance(w)
+        tangent = float(np.ravel(foundation.tangent(np.array([w]), np.zeros(1))[0])[0])
+        if not (np.isfinite(value) and np.isfinite(tangent)) or tangent <= 0:
+            break
+        if abs(value) <= 1e-13 * force:
+            return w
+        w -= value / tangent
+        if w >= 0:
+            break
     # The linear estimate brackets the root unless the law has (almost) no
     # stiffness at rest; then start from a millimetre, the scale of a track.
-    guess = force / stiffness if stiffness > 0 else np.inf
     low = -guess if guess < 1.0 else -1e-3
     for _ in range(200):
         value = balance(low)

@@ -172,7 +172,7 @@ def require_jacobian_samples(samples: int, harmonics: int) -> None:
     N-point DFT holds only for N > 4m; that is also the rule for an exact
     AFT of the cubic law (see `default_samples`).
     """
-    if samples <= 4 * harmonics:
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples <= 4 * harmonics:
         raise ValueError(
             f"samples must be an integer > 4 * harmonics = {4 * harmonics} (the AFT Jacobian "
             f"needs the foundation tangent's harmonics up to 2m); got {samples!r}"

@@ -23,7 +23,6 @@ from .foundation_at_rest import check_foundation_at_rest
 from .foundations import as_foundation
 from .harmonic_balance import (
     HarmonicSystem,
-    harmonic_system,
     require_jacobian_samples,
     residual,
     residual_norm,
@@ -37,10 +36,11 @@ from .track import Track
 from .truncation import (
     MAX_AUTO_HARMONICS,
     TAIL_FACTOR,
+    auto_samples,
     estimate_of,
+    grown_harmonics,
     padded,
     predict_harmonics,
-    tail_coefficients,
     track_spectrum,
 )
 
@@ -210,33 +210,37 @@ def solve(
         target, spectrum = predict_harmonics(track, foundation, accuracy / 2)
         coarse = method == "analytic" or target <= WARM_START_ABOVE
         m = target if coarse else max(15, target // 4)
-        system = spectrum.system(track, foundation, m)
+        system = spectrum.system(track, foundation, m, auto_samples(m))
     else:
         m = target = int(harmonics)
-        system = harmonic_system(track, foundation, m, samples)
-        require_jacobian_samples(system.samples, m)
+        if samples is not None:
+            require_jacobian_samples(samples, m)
+        # one evaluation of eq. (3) serves the solve and its truncation estimate
         spectrum = track_spectrum(track, TAIL_FACTOR * m)
+        system = spectrum.system(track, foundation, m, samples)
         initial = None if initial is None else checked_initial(initial, m)
 
     iterations = 0
     for _round in range(AUTO_ROUNDS + 1):
         outcome, used_split, note = _run(method, system, tol, max_iterations, split, initial)
         iterations += outcome.iterations
-        estimate = estimate_of(system, outcome.coefficients, spectrum)
+        estimate, tail = estimate_of(system, outcome.coefficients, spectrum)
         if not automatic or not outcome.converged:
+            break
+        if m >= target and (estimate <= accuracy or m >= MAX_AUTO_HARMONICS):
             break
         if m < target:
             grown = target
-        elif estimate <= accuracy or m >= MAX_AUTO_HARMONICS:
-            break
         else:
-            grown = min(MAX_AUTO_HARMONICS, math.ceil(m * max(1.5, (estimate / accuracy) ** 0.5)))
-        tail = tail_coefficients(system, outcome.coefficients, spectrum)
+            # the solution and its estimated tail are the best spectrum known:
+            # choose the next m from it, as the prediction did from eq. (23)
+            grown = min(MAX_AUTO_HARMONICS, max(
+                math.ceil(1.1 * m), grown_harmonics(outcome.coefficients, tail, 0.8 * accuracy)))
         if spectrum.upto < TAIL_FACTOR * grown:
             spectrum = track_spectrum(track, TAIL_FACTOR * grown)
         initial = padded(outcome.coefficients, tail, grown) if method != "analytic" else None
         m = target = grown
-        system = spectrum.system(track, foundation, grown)
+        system = spectrum.system(track, foundation, grown, auto_samples(grown))
 
     message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
     if outcome.converged and np.isfinite(estimate) and estimate > (accuracy if automatic else WARN_TRUNCATION):

@@ -35,6 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .foundation_at_rest import static_deflection
+from .foundations import as_foundation
 from .harmonic_balance import HarmonicSystem, NonFiniteForceError, default_samples, synthesize
 from .sleeper import coupling_and_transfer, sleeper_operator
 from .track import Track
@@ -48,13 +49,26 @@ __all__ = [
     "predict_harmonics",
     "MAX_AUTO_HARMONICS",
     "estimate_of",
+    "auto_samples",
     "padded",
+    "grown_harmonics",
 ]
 
 TAIL_FACTOR = 8
 """The estimate sums the neglected harmonics up to M = TAIL_FACTOR * m."""
 MAX_AUTO_HARMONICS = 2000
 """Largest m that harmonics="auto" picks: Newton's dense Jacobian is (2m+1)^2."""
+
+
+def auto_samples(harmonics: int) -> int:
+    """AFT samples N for harmonics="auto": the smallest power of two >= 8 (m + 1), at least 64.
+
+    Half of `railtrack.harmonic_balance.default_samples`.  Still exact for
+    the cubic law (N > 4m); for a kinked law the aliasing of harmonic n <= m
+    is of order (m / N)^2 = 1/64 of that harmonic's share of the truncation
+    error, which "auto" keeps below its accuracy.
+    """
+    return max(64, 1 << int(np.ceil(np.log2(8 * (harmonics + 1)))))
 
 
 @dataclass(frozen=True, eq=False)
@@ -75,9 +89,11 @@ class TrackSpectrum:
 
     def system(self, track: Track, foundation, harmonics: int, samples: int | None = None) -> HarmonicSystem:
         """The `HarmonicSystem` of harmonics 0..m, without evaluating eq. (3) again."""
+        if harmonics > self.upto:
+            raise ValueError(f"the spectrum holds harmonics up to {self.upto}; asked for {harmonics}")
         keep = slice(0, harmonics + 1)
         return HarmonicSystem(
-            track, foundation, harmonics,
+            track, as_foundation(foundation), harmonics,
             default_samples(harmonics) if samples is None else int(samples),
             self.omega[keep], self.coupling[keep], self.load[keep], self.operator[keep],
         )
@@ -155,6 +171,11 @@ def truncation_error(system: HarmonicSystem, coefficients: np.ndarray,
     >>> 0.003 < solution.truncation_error < 0.008    # m = 15 misses about 0.5 % of the peak
     True
     """
+    return _error_and_tail(system, coefficients, spectrum)[0]
+
+
+def _error_and_tail(system: HarmonicSystem, coefficients: np.ndarray,
+                    spectrum: TrackSpectrum | None) -> tuple[float, np.ndarray]:
     m = system.harmonics
     upto = TAIL_FACTOR * m
     if spectrum is None or spectrum.upto < upto:
@@ -168,7 +189,7 @@ def truncation_error(system: HarmonicSystem, coefficients: np.ndarray,
     whole = _series(np.asarray(coefficients, dtype=complex), 0, samples) + neglected
     peak = float(np.max(np.abs(whole)))
     error = float(np.max(np.abs(neglected)))
-    return error / peak if peak > 0 else float("inf")
+    return (error / peak if peak > 0 else float("inf")), tail
 
 
 def predict_harmonics(track: Track, foundation, accuracy: float) -> tuple[int, TrackSpectrum]:
@@ -199,42 +220,51 @@ def predict_harmonics(track: Track, foundation, accuracy: float) -> tuple[int, T
                               foundation.tangent(np.array([mean]), np.zeros(1)))
     else:
         stiffness, damping = foundation.linearization()
-    upto = TAIL_FACTOR * max(8, int(np.ceil(track.wagon_length / track.sleeper_spacing)))
+    # m is usually below H / L; room for a quarter more spares a second
+    # evaluation of eq. (3) when the solve asks for a larger m
+    upto = TAIL_FACTOR * max(8, int(np.ceil(1.25 * track.wagon_length / track.sleeper_spacing)))
     while True:
         spectrum = track_spectrum(track, upto)
         response = _linearised_response(spectrum, 0.0, stiffness, damping, mass)
         if np.isfinite(mean):
             response[0] = mean
-        samples = _grid(upto)
-        peak = float(np.max(np.abs(_series(response, 0, samples))))
-        budget = accuracy * peak
-        # 2 sum_{n > m} |c_n| bounds the max norm of the neglected part from above.
-        bound = 2.0 * np.cumsum(np.abs(response[::-1]))[::-1]
-        fits = np.flatnonzero(np.append(bound[1:], 0.0) <= budget)
-        upper = int(fits[0]) if len(fits) else upto
-        if upper <= upto // TAIL_FACTOR or upto >= TAIL_FACTOR * MAX_AUTO_HARMONICS:
-            break
+        # a coarser grid than the estimate's: the prediction is only a start
+        chosen = _smallest_fitting_m(response, accuracy, _grid(upto) // 2)
+        if chosen <= upto // TAIL_FACTOR or upto >= TAIL_FACTOR * MAX_AUTO_HARMONICS:
+            return max(1, min(chosen, MAX_AUTO_HARMONICS)), spectrum
         upto *= 2
-    upper = max(1, min(upper, MAX_AUTO_HARMONICS))
-    low, high = 0, upper        # the error at `high` fits; bisect for the smallest m
-    while high - low > 1:
+
+
+def _smallest_fitting_m(response: np.ndarray, accuracy: float, samples: int) -> int:
+    """Smallest m with max_t |sum_{|n| > m} c_n e^{i omega_n t}| <= accuracy * max_t |w(t)|."""
+    budget = accuracy * float(np.max(np.abs(_series(response, 0, samples))))
+    # Between two cheap bounds of the max norm of the neglected part, from
+    # above 2 sum_{n > m} |c_n| and from below its r.m.s., bisect on m.
+    above = 2.0 * np.cumsum(np.abs(response[::-1]))[::-1]
+    below = np.sqrt(2.0 * np.cumsum((np.abs(response) ** 2)[::-1])[::-1])
+    fits_above = np.flatnonzero(np.append(above[1:], 0.0) <= budget)
+    fits_below = np.flatnonzero(np.append(below[1:], 0.0) <= budget)
+    high = int(fits_above[0]) if len(fits_above) else len(response) - 1
+    low = int(fits_below[0]) - 1 if len(fits_below) else high - 1
+    while high - low > 1:       # the error at `high` fits, at `low` it does not
         middle = (low + high) // 2
         if np.max(np.abs(_series(response[middle + 1 :], middle + 1, samples))) <= budget:
             high = middle
         else:
             low = middle
-    return max(1, high), spectrum
+    return max(1, high)
 
 
-def estimate_of(system: HarmonicSystem, coefficients: np.ndarray, spectrum: TrackSpectrum) -> float:
-    """`truncation_error`, or NaN when it cannot be evaluated (a diverged iterate)."""
+def estimate_of(system: HarmonicSystem, coefficients: np.ndarray,
+                spectrum: TrackSpectrum) -> tuple[float, np.ndarray | None]:
+    """`truncation_error` and the estimated tail c_{m+1}..c_{8m}; (NaN, None) for a diverged iterate."""
     if not np.all(np.isfinite(coefficients)):
-        return float("nan")
+        return float("nan"), None
     try:
         with np.errstate(over="ignore", invalid="ignore"):
-            return truncation_error(system, coefficients, spectrum)
+            return _error_and_tail(system, coefficients, spectrum)
     except NonFiniteForceError:
-        return float("nan")
+        return float("nan"), None
 
 
 def padded(coefficients: np.ndarray, tail: np.ndarray, harmonics: int) -> np.ndarray:
@@ -243,3 +273,9 @@ def padded(coefficients: np.ndarray, tail: np.ndarray, harmonics: int) -> np.nda
     known = np.concatenate([coefficients, tail])[: harmonics + 1]
     start[: len(known)] = known
     return start
+
+
+def grown_harmonics(coefficients: np.ndarray, tail: np.ndarray, accuracy: float) -> int:
+    """The m that the spectrum c_0..c_m plus its estimated tail needs for `accuracy`."""
+    spectrum = np.concatenate([np.asarray(coefficients, dtype=complex), tail])
+    return _smallest_fitting_m(spectrum, accuracy, _grid(len(spectrum) - 1))
