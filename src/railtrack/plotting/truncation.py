@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import NullFormatter
 
 from ..solution import TruncationWarning
 from ..solve import solve
@@ -102,6 +103,8 @@ def plot_truncation(study: TruncationStudy) -> Figure:
     fig, (left, right) = new_figure(1, 2, width=8.0, height=3.4)
     left.loglog(study.wagon_lengths, 100 * study.error_15, "o-", label="true (against reference)")
     left.loglog(study.wagon_lengths, 100 * study.estimate_15, "x--", label="estimated")
+    left.set_xticks(study.wagon_lengths, [f"{h:g}" for h in study.wagon_lengths])
+    left.xaxis.set_minor_formatter(NullFormatter())
     left.set_xlabel("wagon length H [m]")
     left.set_ylabel("error of w at m = 15 [% of peak]")
     left.legend()
