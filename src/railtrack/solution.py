@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .rail_field import rail_field_coefficients, seat_load_coefficients
 from .sleeper import rail_coefficients
 from .track import Track
 from .train import load_coefficients
@@ -137,9 +138,58 @@ class Solution:
             self.track, omega, self.coefficients, load_coefficients(self.track, omega)
         )
 
-    def rail_displacement(self, t: ArrayLike) -> np.ndarray:
-        """Rail displacement above the sleeper w_r(0, t) [m], eq. (6)."""
-        return fourier_series(self.rail_coefficients(), self.frequencies, t)
+    def rail_displacement(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
+        """Rail displacement w_r(x, t) [m], eq. (6) at x = 0, `railtrack.rail_field` elsewhere.
+
+        Parameters
+        ----------
+        t : array_like
+            Time [s] (t = 0: a front wheel above the observed sleeper).
+        x : array_like, optional
+            Position along the rail ahead of the observed sleeper (towards +x,
+            the direction of travel) [m], any real value; broadcast with `t`.
+            x = 0 (the default) is the rail above the sleeper, eq. (6).
+
+        Returns
+        -------
+        ndarray
+            w_r, positive upward, shape ``np.broadcast(t, x).shape``.
+        """
+        if np.all(np.asarray(x) == 0.0):
+            values = fourier_series(self.rail_coefficients(), self.frequencies, t)
+            return values + np.zeros(np.shape(x))
+        return self._rail_field(t, x, 0)
+
+    def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
+        """Bending moment of the rail EI d^2 w_r / dx^2 at (x, t) [N m].
+
+        Positive when sagging (the rail concave upward, as under a wheel),
+        since w is positive upward.  `t` and `x` as in `rail_displacement`.
+        """
+        return self.track.rail_bending_stiffness * self._rail_field(t, x, 1)
+
+    def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
+        """Pad force on the sleeper, positive in compression [N], eq. (5).
+
+        ``k1 (w - w_r) + eta1 (w - w_r)'`` at x = 0, which is the reaction R(t)
+        that the pad gives the rail (upward); its mean is 2 Q L / H.
+        """
+        omega = self.frequencies
+        return fourier_series(
+            seat_load_coefficients(self.track, omega, self.coefficients), omega, t)
+
+    def _rail_field(self, t: ArrayLike, x: ArrayLike, which: int) -> np.ndarray:
+        """Re sum_n r_n(x) e^{i omega_n t}: displacement (0) or curvature (1) of the rail."""
+        t, x = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(x, dtype=float))
+        xs, x_index = np.unique(x, return_inverse=True)
+        ts, t_index = np.unique(t, return_inverse=True)
+        omega = self.frequencies
+        coefficients = rail_field_coefficients(self.track, omega, self.coefficients, xs)[which]
+        if ts.size * xs.size <= 4 * max(t.size, 1):   # a grid: one matrix product
+            table = (np.exp(1j * np.multiply.outer(ts, omega)) @ coefficients.T).real
+            return table[t_index.reshape(t.shape), x_index.reshape(x.shape)]
+        phases = np.exp(1j * np.multiply.outer(t, omega))
+        return np.einsum("...n,...n->...", coefficients[x_index.reshape(x.shape)], phases).real
 
     def foundation_force(self, t: ArrayLike) -> np.ndarray:
         """Force f(w, w') on the foundation [N] (positive when the foundation is stretched)."""
