@@ -93,7 +93,7 @@ def plot_dirichlet_kernel(orders: Sequence[int] = (2, 5, 20), periods: float = 1
                 label=f"J = {order} ({2 * order + 1} wagons)", gid=f"kernel-{order}")
     ax.axhline(0.0, color="0.5", lw=0.6)
     ax.set_xlabel(r"$\omega T / 2\pi$ (the teeth sit at the harmonic numbers $n$)")
-    ax.set_ylabel(r"partial sum $D_J(\omega T)$ [-]")
+    ax.set_ylabel(r"partial sum $\Pi_J(\omega T)$ [-]")
     ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.grid(True, alpha=0.3)
     return fig

@@ -189,7 +189,7 @@ _NOTATION = (
     (r"$\mathcal{F}_{nk}$", r"harmonic $n$ of $g$ at iterate $k$, eq. (20) ($\mathcal{F}_n$ at the "
      "solution); not the load $F_n$", "m/s²"),
     (r"$m,\ k$", "number of harmonics kept, iteration index", "–"),
-    (r"$N_0$", r"split of eq. (21): harmonics $|n| \le N_0$ use its first branch, the others "
+    (r"$N_0$", r"split of eq. (21): harmonics $\lvert n\rvert \le N_0$ use its first branch, the others "
      "its second", "–"),
 )
 
