@@ -7,6 +7,7 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 =====================  ==============================================
 `railtrack.track`      parameters (Table 1)
 `railtrack.receptance` Section 2.1, eq. (3): the rail's receptance
+`railtrack.rail_field` eq. (3) at any offset x: the rail between sleepers
 `railtrack.sleeper`    Section 2.2, eqs. (4)–(8), (14): pad, coupling P
 `railtrack.train`      Section 2.3, eqs. (9)–(16): the load F
 `railtrack.harmonic_balance`  Section 3, eqs. (17)–(20): residual, AFT
@@ -40,6 +41,7 @@ from .foundations import (
     as_foundation,
 )
 from .linear import analytic_coefficients, sweep_extremes, sweep_speeds
+from .rail_field import offset_receptance
 from .receptance import rail_receptance, rail_receptance_lattice_sum
 from .sleeper import rail_coupling
 from .solution import ConvergenceError, Solution, TruncationWarning
@@ -70,6 +72,7 @@ __all__ = [
     "sweep_extremes",
     "rail_receptance",
     "rail_receptance_lattice_sum",
+    "offset_receptance",
     "rail_coupling",
     "load_coefficients",
     "simulate_time_domain",
