@@ -277,7 +277,11 @@ def rail_field_coefficients(track: Track, omega: ArrayLike, sleeper: ArrayLike,
     k, xi = _split(track, np.atleast_1d(x))
     q = omega * track.sleeper_spacing / track.speed
     above = rail_coefficients(track, omega, sleeper, load_coefficients(track, omega))
-    lam, lam2 = difference_kernels(track, omega, xi)
+    # Positions a whole number of spans apart share their kernels: evaluate
+    # each offset within the span once (to 1e-12 of a span).
+    rounded = np.round(xi / track.sleeper_spacing, 12)
+    _, first, inverse = np.unique(rounded, return_index=True, return_inverse=True)
+    lam, lam2 = (kernel[inverse.ravel()] for kernel in difference_kernels(track, omega, xi[first]))
     factor = _reaction_factor(track, omega, sleeper)
     shift = np.exp(-1j * q * xi[:, None])
     bloch = np.exp(-1j * q * k[:, None])

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -13,7 +13,7 @@ from .sleeper import rail_coefficients
 from .track import Track
 from .train import load_coefficients
 
-__all__ = ["Solution", "ConvergenceError", "TruncationWarning", "fourier_series"]
+__all__ = ["Solution", "ConvergenceError", "TruncationWarning", "DeflectionBowl", "fourier_series"]
 
 
 def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) -> np.ndarray:
@@ -46,6 +46,30 @@ class TruncationWarning(UserWarning):
     The message names m, the estimate and the fix (``harmonics="auto"`` or a
     larger m).  See `railtrack.truncation`.
     """
+
+
+class DeflectionBowl(NamedTuple):
+    """The track along x at one instant (`Solution.deflection_bowl`), SI units, w upward.
+
+    Attributes
+    ----------
+    x : ndarray
+        Positions along the rail ahead of the observed sleeper [m].
+    rail : ndarray
+        Rail displacement at those positions [m].
+    sleeper_positions : ndarray
+        The sleepers k L that lie within [min x, max x] [m].
+    sleepers : ndarray
+        Their displacements [m].
+    wheel_positions : ndarray
+        Where the wheels are at that instant, within [min x, max x] [m].
+    """
+
+    x: np.ndarray
+    rail: np.ndarray
+    sleeper_positions: np.ndarray
+    sleepers: np.ndarray
+    wheel_positions: np.ndarray
 
 
 @dataclass(frozen=True, eq=False)
@@ -201,6 +225,70 @@ class Solution:
             self.foundation.force(self.sleeper_displacement(t), self.sleeper_velocity(t)),
             dtype=float,
         )
+
+    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
+        """Rail displacement at the contact point of the front and back wheel [m].
+
+        Wheel d (offset 0 or D behind the front wheel of a wagon) is at
+        x = v t - d at time t, so this is ``rail_displacement(t, v t - d)``.
+
+        Returns
+        -------
+        ndarray, shape t.shape + (2,)
+            [..., 0] the front wheel, [..., 1] the back wheel.
+        """
+        t = np.asarray(t, dtype=float)
+        offsets = np.array([0.0, float(self.track.wheel_spacing)])
+        times = np.broadcast_to(t[..., None], t.shape + (2,))
+        return self.rail_displacement(times, float(self.track.speed) * times - offsets)
+
+    def deflection_bowl(self, t: ArrayLike, x: ArrayLike) -> DeflectionBowl:
+        """The rail and the sleepers along the track at one instant, or at several [m].
+
+        The sleeper at x = k L repeats the observed sleeper's history k L / v
+        later (the train moves towards +x): w_k(t) = w(t - k L / v).  The rail
+        coefficients are computed once per position and shared by all instants.
+
+        Parameters
+        ----------
+        t : float or array_like, shape (T,)
+            The instant(s) [s]; t = 0 puts a front wheel above the observed sleeper.
+        x : array_like, shape (X,)
+            Positions along the rail [m], any real values (negative: behind).
+
+        Returns
+        -------
+        DeflectionBowl
+            ``rail`` of shape (X,) for a scalar t, (T, X) otherwise, and
+            ``sleepers`` likewise over the sleepers within [min x, max x].
+            ``wheel_positions``: for a scalar t the wheels within the window;
+            for several instants, shape (T, J), the wheels that are in it at
+            some instant (outside it at others).
+
+        Examples
+        --------
+        >>> from railtrack import Track, LinearFoundation, solve
+        >>> bowl = solve(Track.paper(), LinearFoundation.paper()).deflection_bowl(0.0, [-0.6, 0.0, 0.6])
+        >>> bowl.sleeper_positions.tolist(), bool(bowl.rail[1] < bowl.sleepers[1] < 0)
+        ([-0.6, 0.0, 0.6], True)
+        """
+        x = np.atleast_1d(np.asarray(x, dtype=float))
+        times = np.asarray(t, dtype=float)
+        instants = np.atleast_1d(times)
+        span, speed = float(self.track.sleeper_spacing), float(self.track.speed)
+        positions = span * np.arange(np.ceil(x.min() / span), np.floor(x.max() / span) + 1)
+        wagon = float(self.track.wagon_length)
+        reach = speed * instants
+        wagons = np.arange(np.floor((reach.min() - x.max()) / wagon),
+                           np.ceil((reach.max() - x.min()) / wagon) + 2)
+        fronts = reach[:, None] - wagon * wagons[None, :]
+        wheels = np.concatenate([fronts, fronts - float(self.track.wheel_spacing)], axis=1)
+        inside = (wheels >= x.min()) & (wheels <= x.max())
+        rail = self.rail_displacement(instants[:, None], x[None, :])
+        sleepers = self.sleeper_displacement(instants[:, None] - positions[None, :] / speed)
+        if times.ndim == 0:
+            return DeflectionBowl(x, rail[0], positions, sleepers[0], np.sort(wheels[0][inside[0]]))
+        return DeflectionBowl(x, rail, positions, sleepers, wheels[:, inside.any(axis=0)])
 
     def one_period(self, samples: int = 400) -> tuple[np.ndarray, np.ndarray]:
         """Times over [0, T) and w at those times, handy for plotting [s], [m]."""
