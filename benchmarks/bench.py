@@ -29,6 +29,8 @@ CASES = {
     "cubic eps = 0.8": rt.CubicFoundation.paper(0.8),
 }
 RUNS = 7
+RATIO_RUNS = 15
+"""Runs of the auto / m = 15 ratio: single runs on a shared 2-core VM range over 0.8-3x."""
 
 
 def median_time(function, repeat: int) -> float:
@@ -44,14 +46,14 @@ def median_time(function, repeat: int) -> float:
 
 
 def median_ratio(slow, fast, repeat: int) -> float:
-    """Median over RUNS runs of time(slow) / time(fast), the two timed back to back.
+    """Median over RATIO_RUNS runs of time(slow) / time(fast), the two timed back to back.
 
     Timing both in the same run cancels the drift of a shared machine's
     speed, which moves separate medians by tens of per cent.
     """
     slow(), fast()
     ratios = []
-    for _ in range(RUNS):
+    for _ in range(RATIO_RUNS):
         times = []
         for function in (slow, fast):
             start = time.perf_counter()
@@ -113,6 +115,16 @@ def main() -> None:
     print("|---|---:|")
     print(f"| vectorised `rt.sweep_speeds` | {sweep * 1e3:.1f} |")
     print(f"| loop of `rt.solve(..., 15, method='analytic')` (100 timed, x10) | {loop * 1e3:.0f} |")
+
+    solution = rt.solve(track, linear)
+    x = np.linspace(-30.0, 30.0, 1001)          # 100 spans, 10 points a span
+    instants = np.linspace(0.0, solution.period, 200, endpoint=False)
+    bowl = median_time(lambda: solution.deflection_bowl(instants, x), 5)
+    print()
+    print("| post-processing (linear law, m = 'auto') | time [ms] |")
+    print("|---|---:|")
+    print(f"| `deflection_bowl`: 100 spans (1,001 points, 101 sleepers) at 200 instants "
+          f"| {bowl * 1e3:.1f} |")
 
 
 if __name__ == "__main__":

@@ -285,7 +285,10 @@ class Solution:
         wheels = np.concatenate([fronts, fronts - float(self.track.wheel_spacing)], axis=1)
         inside = (wheels >= x.min()) & (wheels <= x.max())
         rail = self.rail_displacement(instants[:, None], x[None, :])
-        sleepers = self.sleeper_displacement(instants[:, None] - positions[None, :] / speed)
+        # w(t - kL/v) = Re sum_n [c_n e^{-i omega_n k L / v}] e^{i omega_n t}: one product
+        omega = self.frequencies
+        delayed = self.coefficients[:, None] * np.exp(-1j * np.multiply.outer(omega, positions / speed))
+        sleepers = (np.exp(1j * np.multiply.outer(instants, omega)) @ delayed).real
         if times.ndim == 0:
             return DeflectionBowl(x, rail[0], positions, sleepers[0], np.sort(wheels[0][inside[0]]))
         return DeflectionBowl(x, rail, positions, sleepers, wheels[:, inside.any(axis=0)])

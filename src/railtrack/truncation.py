@@ -278,4 +278,4 @@ def padded(coefficients: np.ndarray, tail: np.ndarray, harmonics: int) -> np.nda
 def grown_harmonics(coefficients: np.ndarray, tail: np.ndarray, accuracy: float) -> int:
     """The m that the spectrum c_0..c_m plus its estimated tail needs for `accuracy`."""
     spectrum = np.concatenate([np.asarray(coefficients, dtype=complex), tail])
-    return _smallest_fitting_m(spectrum, accuracy, _grid(len(spectrum) - 1))
+    return _smallest_fitting_m(spectrum, accuracy, _grid(len(spectrum) - 1) // 2)
