@@ -225,7 +225,7 @@ def solve(
         outcome, used_split, note = _run(method, system, tol, max_iterations, split, initial)
         iterations += outcome.iterations
         estimate, tail = estimate_of(system, outcome.coefficients, spectrum)
-        if not automatic or not outcome.converged:
+        if not automatic or not outcome.converged or tail is None:
             break
         if m >= target and (estimate <= accuracy or m >= MAX_AUTO_HARMONICS):
             break
@@ -243,9 +243,16 @@ def solve(
         system = spectrum.system(track, foundation, grown, auto_samples(grown))
 
     message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
+    if automatic:
+        message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
+                    f"estimated truncation error {estimate:.1e})")
     if outcome.converged and np.isfinite(estimate) and estimate > (accuracy if automatic else WARN_TRUNCATION):
-        fix = (f"harmonics='auto' picks m = {predict_harmonics(track, foundation, DEFAULT_ACCURACY / 2)[0]}"
-               if not automatic else f"the largest m that 'auto' takes is {MAX_AUTO_HARMONICS}")
+        if not automatic:
+            fix = f"harmonics='auto' picks m = {predict_harmonics(track, foundation, DEFAULT_ACCURACY / 2)[0]}"
+        elif m >= MAX_AUTO_HARMONICS:
+            fix = f"the largest m that 'auto' takes is {MAX_AUTO_HARMONICS}"
+        else:
+            fix = f"'auto' stopped after {AUTO_ROUNDS + 1} solves"
         warnings.warn(TruncationWarning(
             f"harmonics={m}: the estimated truncation error is {estimate:.1%} of the peak "
             f"sleeper displacement; {fix} (pass a larger harmonics or use 'auto')"
