@@ -78,7 +78,7 @@ def machine() -> str:
 
 
 def main() -> None:
-    track = rt.Track.paper()
+    track, train = rt.Track.paper(), rt.Train.paper()
     print(f"Machine: {machine()}\n")
     print(f"m = {HARMONICS} harmonics unless 'auto', Table 1 track, median of {RUNS} runs.\n")
     print("| case | Newton, m = 15 [ms] | Newton, m = 'auto' [ms] (m chosen) "
@@ -87,16 +87,16 @@ def main() -> None:
           "to 1e-10 (N0 = m) |")
     print("|---|---:|---:|---:|---:|---:|---:|")
     for name, law in CASES.items():
-        newton_time = median_time(lambda: rt.solve(track, law, HARMONICS), 50)
-        auto_time = median_time(lambda: rt.solve(track, law), 50)
-        auto = rt.solve(track, law)
-        ratio = median_ratio(lambda: rt.solve(track, law), lambda: rt.solve(track, law, HARMONICS), 50)
+        newton_time = median_time(lambda: rt.solve(track, train, law, HARMONICS), 50)
+        auto_time = median_time(lambda: rt.solve(track, train, law), 50)
+        auto = rt.solve(track, train, law)
+        ratio = median_ratio(lambda: rt.solve(track, train, law), lambda: rt.solve(track, train, law, HARMONICS), 50)
         # k = 100 steps: none of these cases reaches tol = 1e-10 sooner
         fixed_time = median_time(
-            lambda: rt.solve(track, law, HARMONICS, method="fixed-point", max_iterations=100), 5
+            lambda: rt.solve(track, train, law, HARMONICS, method="fixed-point", max_iterations=100), 5
         )
-        newton = rt.solve(track, law, HARMONICS, tol=1e-10)
-        fixed = rt.solve(track, law, HARMONICS, method="fixed-point", tol=1e-10,
+        newton = rt.solve(track, train, law, HARMONICS, tol=1e-10)
+        fixed = rt.solve(track, train, law, HARMONICS, method="fixed-point", tol=1e-10,
                          max_iterations=5000)
         fixed_steps = str(fixed.iterations) if fixed.converged else f"> {fixed.iterations}"
         print(f"| {name} | {newton_time * 1e3:.2f} | {auto_time * 1e3:.2f} ({auto.harmonics}) "
@@ -105,9 +105,9 @@ def main() -> None:
 
     speeds = np.linspace(10.0, 100.0, 1000)
     linear = CASES["linear"]
-    sweep = median_time(lambda: rt.sweep_speeds(track, linear, speeds, HARMONICS), 5)
+    sweep = median_time(lambda: rt.sweep_speeds(track, train, linear, speeds, HARMONICS), 5)
     loop = median_time(
-        lambda: [rt.solve(track.replace(speed=s), linear, HARMONICS, method="analytic")
+        lambda: [rt.solve(track, train.replace(speed=s), linear, HARMONICS, method="analytic")
                  for s in speeds[:100]], 1
     ) * 10
     print()
@@ -116,7 +116,7 @@ def main() -> None:
     print(f"| vectorised `rt.sweep_speeds` | {sweep * 1e3:.1f} |")
     print(f"| loop of `rt.solve(..., 15, method='analytic')` (100 timed, x10) | {loop * 1e3:.0f} |")
 
-    solution = rt.solve(track, linear)
+    solution = rt.solve(track, train, linear)
     x = np.linspace(-30.0, 30.0, 1001)          # 100 spans, 10 points a span
     instants = np.linspace(0.0, solution.period, 200, endpoint=False)
     bowl = median_time(lambda: solution.deflection_bowl(instants, x), 5)
@@ -125,6 +125,21 @@ def main() -> None:
     print("|---|---:|")
     print(f"| `deflection_bowl`: 100 spans (1,001 points, 101 sleepers) at 200 instants "
           f"| {bowl * 1e3:.1f} |")
+
+    # The axles enter only the load F_n of eq. (16): a coach should cost what the
+    # paper's wagon costs per harmonic.  Both at m = 60, where the bilinear law's
+    # Newton needs a few steps, so the time is the residual's, not the set-up's.
+    coach = rt.Train.passenger_coach(45.0)
+    law = CASES["bilinear e = 0.5"]
+    print()
+    print("| four-axle coach against the paper's wagon, Newton at m = 60 "
+          "| time [ms] | steps | time per harmonic [ms] |")
+    print("|---|---:|---:|---:|")
+    for label, vehicle in (("paper's wagon (2 axles, 18 m)", train),
+                           ("passenger coach (4 axles, 26.4 m)", coach)):
+        spent = median_time(lambda: rt.solve(track, vehicle, law, 60), 20)
+        steps = rt.solve(track, vehicle, law, 60).iterations
+        print(f"| {label} | {spent * 1e3:.2f} | {steps} | {spent * 1e3 / 60:.3f} |")
 
 
 if __name__ == "__main__":

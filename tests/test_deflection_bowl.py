@@ -3,17 +3,18 @@
 import numpy as np
 import pytest
 
-from railtrack import LinearFoundation, Track, simulate_time_domain, solve
+from railtrack import LinearFoundation, Track, Train, simulate_time_domain, solve
 
 TRACK = Track.paper()
+TRAIN = Train.paper()
 LINEAR = LinearFoundation.paper()
-SOLUTION = solve(TRACK, LINEAR, 200, method="analytic")
+SOLUTION = solve(TRACK, TRAIN, LINEAR, 200, method="analytic")
 
 
 def test_bowl_sleepers_match_the_time_domain_ring():
     # the finite-element ring integrates every sleeper: the delay kL/v and its
     # sign come out of the physics there, not out of the formula tested here
-    ring = simulate_time_domain(TRACK, LINEAR, 4, 600)
+    ring = simulate_time_domain(TRACK, TRAIN, LINEAR, 4, 600)
     step = 137
     bowl = SOLUTION.deflection_bowl(ring.times[step], TRACK.sleeper_spacing * np.arange(30))
     peak = np.max(np.abs(ring.sleeper_displacements))
@@ -21,7 +22,7 @@ def test_bowl_sleepers_match_the_time_domain_ring():
                                atol=2e-3 * peak)
     # the opposite delay would be far off
     wrong = SOLUTION.sleeper_displacement(ring.times[step] + np.arange(30) * TRACK.sleeper_spacing
-                                          / TRACK.speed)
+                                          / TRAIN.speed)
     assert np.max(np.abs(wrong - ring.sleeper_displacements[step])) > 0.1 * peak
 
 
@@ -29,7 +30,7 @@ def test_rail_above_each_sleeper_repeats_eq6_later():
     t = 0.0123
     positions = TRACK.sleeper_spacing * np.arange(-5, 6)
     bowl = SOLUTION.deflection_bowl(t, positions)
-    above = SOLUTION.rail_displacement(t - positions / TRACK.speed)      # eq. (6) at x = 0
+    above = SOLUTION.rail_displacement(t - positions / TRAIN.speed)      # eq. (6) at x = 0
     np.testing.assert_allclose(bowl.rail, above, rtol=0, atol=1e-12 * np.max(np.abs(above)))
 
 
@@ -46,9 +47,9 @@ def test_many_instants_equal_single_instants_and_wheels_are_in_the_window():
 
 def test_rail_under_a_wheel_repeats_every_sleeper_passing():
     # a wheel meets the same supports every L: its contact point is L/v-periodic
-    t = np.linspace(0.0, TRACK.period, 97)
+    t = np.linspace(0.0, TRAIN.period, 97)
     under = SOLUTION.rail_under_wheels(t)
-    later = SOLUTION.rail_under_wheels(t + TRACK.sleeper_spacing / TRACK.speed)
+    later = SOLUTION.rail_under_wheels(t + TRACK.sleeper_spacing / TRAIN.speed)
     np.testing.assert_allclose(later, under, rtol=0, atol=1e-12 * np.max(np.abs(under)))
     assert under[0, 0] == pytest.approx(SOLUTION.rail_displacement(0.0), rel=1e-12)
     # the deepest contact point is under a wheel, deeper than any sleeper

@@ -5,7 +5,7 @@ real cosine/sine sum; the geometric error of eq. (21) for the mean, which for
 a linear law is exactly (1 - k2/k1)^k after k steps from c = 0 (Section 4.1:
 harmonic 0 decouples and its factor is |P_0 - k2/M| / omega_0^2 with
 P_0 = omega_0^2 = k1/M); the static balance of harmonic 0 of eq. (17),
-mean foundation force = -2QL/H for any law; and the reduction of the
+mean foundation force = 2QL/H (compression positive) for any law; and the reduction of the
 bilinear (e = 1) and cubic (eps = 0) laws to the linear one.
 """
 
@@ -21,7 +21,7 @@ import railtrack as rt  # noqa: E402
 from railtrack.plotting import paper_figures as pf  # noqa: E402
 from railtrack.plotting.style import MM  # noqa: E402
 
-TRACK = rt.Track.paper()
+PASSAGE = rt.Passage.paper()
 LINEAR = rt.LinearFoundation.paper()
 PEAK_SCALE = 1.1e-3  # |w| at the peak of the linear response [m], a scale for tolerances
 
@@ -53,9 +53,9 @@ def fig7():
 
 def eq23_series(times, harmonics=15):
     """w(t) from eq. (23) as c_0 + 2 sum_n Re(c_n e^{i omega_n t}), n = 1..m."""
-    c = rt.analytic_coefficients(TRACK, LINEAR, harmonics)[harmonics:]
+    c = rt.analytic_coefficients(PASSAGE, LINEAR, harmonics)[harmonics:]
     n = np.arange(1, harmonics + 1)
-    phase = TRACK.fundamental_frequency * np.outer(times, n)
+    phase = PASSAGE.fundamental_frequency * np.outer(times, n)
     return c[0].real + 2.0 * (np.cos(phase) @ c[1:].real - np.sin(phase) @ c[1:].imag)
 
 
@@ -64,7 +64,7 @@ def eq23_series(times, harmonics=15):
 def test_figure3_reference_is_eq23(fig3):
     np.testing.assert_allclose(fig3.reference, eq23_series(fig3.times), rtol=0, atol=1e-15)
     assert fig3.reference_means == pytest.approx(
-        -2 * TRACK.wheel_load * TRACK.sleeper_spacing / (TRACK.wagon_length * LINEAR.stiffness),
+        -2 * PASSAGE.wheel_load * PASSAGE.sleeper_spacing / (PASSAGE.wagon_length * LINEAR.stiffness),
         rel=1e-13,
     )
 
@@ -82,7 +82,7 @@ def test_figure3_fixed_point_approaches_eq23_geometrically(fig3):
     assert longest.converged and longest.iterations < 400
     assert errors[fig3.values.index(400)] < 1e-9 * PEAK_SCALE
     # the mean (harmonic 0) after k steps from zero: c0 (1 - q^k), q = 1 - k2/k1
-    q = 1 - LINEAR.stiffness / TRACK.pad_stiffness
+    q = 1 - LINEAR.stiffness / PASSAGE.pad_stiffness
     expected = np.array([q**s.iterations for s in fig3.solutions])
     np.testing.assert_allclose(fig3.mean_errors(), expected, rtol=1e-6, atol=1e-14)
 
@@ -131,9 +131,10 @@ def test_figure5_uplift_grows_as_tension_stiffness_drops(fig5):
 
 
 def test_figure5_mean_foundation_force_balances_the_train(fig5):
-    static = -2 * TRACK.wheel_load * TRACK.sleeper_spacing / TRACK.wagon_length
+    # foundation_force is positive in compression: the mean carries the train's weight
+    static = 2 * PASSAGE.wheel_load * PASSAGE.sleeper_spacing / PASSAGE.wagon_length
     for solution in fig5.reference_solutions:
-        t = np.arange(solution.samples) * TRACK.period / solution.samples
+        t = np.arange(solution.samples) * PASSAGE.period / solution.samples
         assert solution.foundation_force(t).mean() == pytest.approx(static, rel=1e-8)
 
 
@@ -178,7 +179,7 @@ def test_figures_draw_every_curve_with_units(name, axes, lines):
         assert drawn == lines
         for ax in fig.axes:
             assert "[mm]" in ax.get_ylabel()
-            assert ax.get_xlim() == pytest.approx((0.0, TRACK.period))
+            assert ax.get_xlim() == pytest.approx((0.0, PASSAGE.period))
         assert "[s]" in fig.axes[-1].get_xlabel()
         # plotted in mm: the deepest point is about -1 mm, not -1e-3
         low = min(ln.get_ydata().min() for ax in fig.axes for ln in ax.get_lines()

@@ -22,7 +22,7 @@ from railtrack.harmonic_balance import (  # noqa: E402
 )
 from railtrack.plotting import coefficients as pc  # noqa: E402
 
-TRACK = rt.Track.paper()
+PASSAGE = rt.Passage.paper()
 
 
 def _line(fig, gid):
@@ -49,13 +49,13 @@ def test_dirichlet_kernel_equals_closed_form():
 
 def test_spectra_plot_the_library_coefficients():
     m = 15
-    fig = pc.plot_load_spectra(TRACK, m)
-    omega = TRACK.fundamental_frequency * np.arange(m + 1)
+    fig = pc.plot_load_spectra(PASSAGE, m)
+    omega = PASSAGE.fundamental_frequency * np.arange(m + 1)
     P = _line(fig, "P-harmonics")
     F = _line(fig, "F-harmonics")
     np.testing.assert_array_equal(P.get_xdata(), np.arange(m + 1))
-    np.testing.assert_allclose(P.get_ydata(), np.abs(rt.rail_coupling(TRACK, omega)) / 1e6, rtol=1e-12)
-    np.testing.assert_allclose(F.get_ydata(), np.abs(rt.load_coefficients(TRACK, omega)), rtol=1e-12)
+    np.testing.assert_allclose(P.get_ydata(), np.abs(rt.rail_coupling(PASSAGE, omega)) / 1e6, rtol=1e-12)
+    np.testing.assert_allclose(F.get_ydata(), np.abs(rt.load_coefficients(PASSAGE, omega)), rtol=1e-12)
     # F_0 = 2QL/(MH) = 50 m/s^2 is the first point
     assert F.get_ydata()[0] == pytest.approx(50.0, rel=1e-12)
     # the cancelling harmonics: omega_n D / v an odd multiple of pi, D/H = 1/6
@@ -64,27 +64,27 @@ def test_spectra_plot_the_library_coefficients():
 
 def test_vanishing_harmonics_follow_the_wheel_spacing():
     # D/H = 1/4: omega_n D/v = pi n / 2 is an odd multiple of pi for n = 2, 6, 10
-    track = TRACK.replace(wheel_spacing=4.5)
-    np.testing.assert_array_equal(pc.vanishing_harmonics(track, 12), [2, 6, 10])
+    passage = rt.Passage(rt.Track.paper(), rt.Train.paper(wheel_spacing=4.5))
+    np.testing.assert_array_equal(pc.vanishing_harmonics(passage, 12), [2, 6, 10])
 
 
 def test_table_lists_every_harmonic_with_rounded_values():
-    table = pc.load_spectrum_table(TRACK, 15).splitlines()
+    table = pc.load_spectrum_table(PASSAGE, 15).splitlines()
     assert len(table) == 2 + 16
     assert table[2].startswith("| 0 | 0.0 | 2.2000 | 0.0000 | 50 | 0.0 |")
     assert sum("wheels cancel" in row for row in table) == 3
 
 
 def test_aft_plot_shows_the_samples_and_the_harmonics():
-    solution = rt.solve(TRACK, rt.CubicFoundation.paper(0.8), 15)
+    solution = rt.solve(PASSAGE.track, PASSAGE.train, rt.CubicFoundation.paper(0.8), 15)
     fig = pc.plot_aft(solution, samples=128)
-    system = harmonic_system(TRACK, solution.foundation, 15, 128)
+    system = harmonic_system(PASSAGE, solution.foundation, 15, 128)
     c = solution.coefficients[15:]
     w, v = synthesize(system, c)
     samples = _line(fig, "w-samples")
-    np.testing.assert_allclose(samples.get_xdata(), np.arange(128) * TRACK.period / 128)
+    np.testing.assert_allclose(samples.get_xdata(), np.arange(128) * PASSAGE.period / 128)
     np.testing.assert_allclose(samples.get_ydata(), w * 1e3, rtol=1e-12)  # mm
-    g = solution.foundation.force(w, v) / TRACK.sleeper_mass
+    g = solution.foundation.force(w, v) / PASSAGE.sleeper_mass
     np.testing.assert_allclose(_line(fig, "g-samples").get_ydata(), g, rtol=1e-12)
     kept = _line(fig, "G-kept")
     np.testing.assert_allclose(kept.get_ydata(), np.abs(nonlinear_coefficients(system, c)), rtol=1e-12)
@@ -94,7 +94,7 @@ def test_aft_plot_shows_the_samples_and_the_harmonics():
 
 
 def test_contraction_plot_shows_both_branches():
-    system = harmonic_system(TRACK, rt.LinearFoundation.paper(), 15)
+    system = harmonic_system(PASSAGE, rt.LinearFoundation.paper(), 15)
     fig = pc.plot_contraction_factors(system)
     np.testing.assert_allclose(_line(fig, "first-branch").get_ydata(), contraction_factors(system, 15))
     second = _line(fig, "second-branch").get_ydata()
@@ -105,7 +105,7 @@ def test_contraction_plot_shows_both_branches():
 
 def test_convergence_plot_has_one_line_per_method_with_the_solve_history():
     laws = {"linear": rt.LinearFoundation.paper(), "cubic": rt.CubicFoundation.paper(0.8)}
-    histories = pc.convergence_histories(TRACK, laws)
+    histories = pc.convergence_histories(PASSAGE, laws)
     fig = pc.plot_convergence(histories)
     visible = [ax for ax in fig.axes if ax.get_visible()]
     assert [ax.get_title() for ax in visible] == ["linear", "cubic"]
@@ -114,8 +114,9 @@ def test_convergence_plot_has_one_line_per_method_with_the_solve_history():
         lines = {line.get_gid(): line for line in ax.get_lines() if line.get_gid()}
         assert sorted(lines) == ["fixed-point", "newton"]
         expected = {
-            "fixed-point": rt.solve(TRACK, law, 15, method="fixed-point", max_iterations=3000),
-            "newton": rt.solve(TRACK, law, 15, method="newton"),
+            "fixed-point": rt.solve(PASSAGE.track, PASSAGE.train, law, 15, method="fixed-point",
+                                    max_iterations=3000),
+            "newton": rt.solve(PASSAGE.track, PASSAGE.train, law, 15, method="newton"),
         }
         for method, solution in expected.items():
             np.testing.assert_array_equal(lines[method].get_ydata(), solution.residual_history)
@@ -127,7 +128,7 @@ def test_convergence_plot_has_one_line_per_method_with_the_solve_history():
 
 def test_convergence_table_reports_the_solves():
     laws = {"linear": rt.LinearFoundation.paper()}
-    histories = pc.convergence_histories(TRACK, laws)
+    histories = pc.convergence_histories(PASSAGE, laws)
     rows = pc.convergence_table(histories).splitlines()
     fixed = histories["linear"]["fixed-point"]
     cells = [cell.strip() for cell in rows[2].strip("|").split("|")]
@@ -137,7 +138,7 @@ def test_convergence_table_reports_the_solves():
 
 
 def test_change_is_a_fraction_of_the_error():
-    rows = pc.change_and_error_table(TRACK, rt.LinearFoundation.paper(), iterations=(15, 30)).splitlines()
+    rows = pc.change_and_error_table(PASSAGE, rt.LinearFoundation.paper(), iterations=(15, 30)).splitlines()
     assert len(rows) == 4
     for row in rows[2:]:
         k, change, error, ratio = (float(cell) for cell in row.strip("|").split("|"))

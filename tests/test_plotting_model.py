@@ -5,6 +5,8 @@ each figure must plot what the library computes (not a copy or a rescaled
 guess of it).
 """
 
+import dataclasses
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -16,7 +18,7 @@ import pytest  # noqa: E402
 import railtrack as rt  # noqa: E402
 from railtrack.plotting import model  # noqa: E402
 
-TRACK = rt.Track.paper()
+PASSAGE = rt.Passage.paper()
 
 
 @pytest.fixture(autouse=True)
@@ -34,10 +36,14 @@ def _line(fig, gid):
 def test_table1_values_are_track_fields_in_stated_units():
     units = {"pad_stiffness": ("MN/m", 1e6), "rail_bending_stiffness": ("MN·m²", 1e6),
              "wheel_load": ("kN", 1e3), "pad_damping": ("MN·s/m", 1e6), "speed": ("m/s", 1.0)}
-    rows = model.table1_rows(TRACK)
-    assert {r["field"] for r in rows} == {f.name for f in TRACK.__dataclass_fields__.values()}
+    rows = model.table1_rows(PASSAGE)
+    # every field of the track, and of the train with its two axles as the paper's D and Q
+    train_fields = {f.name for f in dataclasses.fields(rt.Train)} - {"axle_positions", "axle_loads"}
+    expected = ({f.name for f in dataclasses.fields(rt.Track)} | train_fields
+                | {"wheel_spacing", "wheel_load"})
+    assert {r["field"] for r in rows} == expected
     for row in rows:
-        assert row["value"] * row["scale"] == pytest.approx(getattr(TRACK, row["field"]), rel=1e-15)
+        assert row["value"] * row["scale"] == pytest.approx(getattr(PASSAGE, row["field"]), rel=1e-15)
         if row["field"] in units:
             assert (row["unit"], row["scale"]) == units[row["field"]]
     # The printed values of the paper's Table 1, in its units.
@@ -47,10 +53,10 @@ def test_table1_values_are_track_fields_in_stated_units():
 
 
 def test_table1_markdown_follows_the_track():
-    text = model.table1(TRACK.replace(speed=30.0, pad_stiffness=150e6))
+    text = model.table1(PASSAGE.replace(speed=30.0, pad_stiffness=150e6))
     assert "| Train speed | $v$ | 30 | m/s |" in text
     assert "| Pad stiffness | $k_1$ | 150 | MN/m |" in text
-    assert len(text.splitlines()) == 2 + len(model.table1_rows(TRACK))
+    assert len(text.splitlines()) == 2 + len(model.table1_rows(PASSAGE))
 
 
 def test_foundation_table_units():
@@ -66,7 +72,7 @@ def test_foundation_table_units():
 
 @pytest.mark.parametrize("sleepers, observed, back", [(9, 6, 3), (5, 3, 1), (12, 8, 2)])
 def test_schematic_counts(sleepers, observed, back):
-    fig = model.draw_track_schematic(TRACK, sleepers=sleepers, observed=observed,
+    fig = model.draw_track_schematic(PASSAGE, sleepers=sleepers, observed=observed,
                                      back_wheel=back)
     patches = fig.axes[0].patches
     count = lambda gid: sum(p.get_gid() == gid for p in patches)  # noqa: E731
@@ -83,32 +89,32 @@ def test_schematic_counts(sleepers, observed, back):
 
 def test_schematic_rejects_bad_layout():
     with pytest.raises(ValueError):
-        model.draw_track_schematic(TRACK, sleepers=5, observed=2, back_wheel=3)
+        model.draw_track_schematic(PASSAGE, sleepers=5, observed=2, back_wheel=3)
 
 
 def test_receptance_plot_data_is_rail_receptance():
     omega = np.geomspace(0.2, 3000.0, 500)
-    fig = model.plot_receptance(TRACK, omega, harmonics=10)
+    fig = model.plot_receptance(PASSAGE, omega, harmonics=10)
     line = _line(fig, "eta_E")
     np.testing.assert_array_equal(line.get_xdata(), omega)
-    expected = np.abs(rt.rail_receptance(TRACK, omega)) * model.RECEPTANCE_UNIT
+    expected = np.abs(rt.rail_receptance(PASSAGE, omega)) * model.RECEPTANCE_UNIT
     np.testing.assert_allclose(line.get_ydata(), expected, rtol=1e-14)
     marks = _line(fig, "harmonics")
-    np.testing.assert_allclose(marks.get_xdata(), TRACK.fundamental_frequency * np.arange(1, 11))
+    np.testing.assert_allclose(marks.get_xdata(), PASSAGE.fundamental_frequency * np.arange(1, 11))
     # mm/kN: 1 m/N is 1e6 mm/kN
     assert model.RECEPTANCE_UNIT == 1e6
 
 
 def test_pole_frequencies_satisfy_the_pole_condition():
-    poles = model.receptance_pole_frequencies(TRACK, 5000.0)
-    assert poles[0] == pytest.approx(model.critical_frequency(TRACK))
+    poles = model.receptance_pole_frequencies(PASSAGE, 5000.0)
+    assert poles[0] == pytest.approx(model.critical_frequency(PASSAGE))
     assert poles[0] == pytest.approx(6.2493, rel=1e-4)
-    kb = rt.receptance.bending_wavenumber(TRACK, poles)
-    L, v = TRACK.sleeper_spacing, TRACK.speed
+    kb = rt.receptance.bending_wavenumber(PASSAGE, poles)
+    L, v = PASSAGE.sleeper_spacing, PASSAGE.speed
     np.testing.assert_allclose(np.cos(kb * L), np.cos(poles * L / v), atol=1e-9)
     # no pole missed: cos(k_b L) - cos(omega L / v) changes sign only at the listed poles
     omega = np.linspace(1.0, 5000.0, 400_001)
-    kb = rt.receptance.bending_wavenumber(TRACK, omega)
+    kb = rt.receptance.bending_wavenumber(PASSAGE, omega)
     gap = np.cos(kb * L) - np.cos(omega * L / v)
     crossings = np.count_nonzero(np.diff(np.sign(gap)) != 0)
     assert crossings == len(poles)
@@ -116,19 +122,19 @@ def test_pole_frequencies_satisfy_the_pole_condition():
 
 def test_coupling_plot_data_is_rail_coupling():
     omega = np.geomspace(0.5, 2000.0, 300)
-    fig = model.plot_rail_coupling(TRACK, omega)
-    P = rt.rail_coupling(TRACK, omega)
+    fig = model.plot_rail_coupling(PASSAGE, omega)
+    P = rt.rail_coupling(PASSAGE, omega)
     np.testing.assert_allclose(_line(fig, "P").get_ydata(), np.abs(P), rtol=1e-14)
     np.testing.assert_allclose(_line(fig, "phase").get_ydata(), np.degrees(np.angle(P)),
                                rtol=1e-14)
 
 
 def test_rail_and_sleeper_plot_in_mm():
-    solution = rt.solve(TRACK, rt.LinearFoundation.paper(), method="analytic")
+    solution = rt.solve(PASSAGE.track, PASSAGE.train, rt.LinearFoundation.paper(), method="analytic")
     fig = model.plot_rail_and_sleeper(solution, samples=200)
     rail, sleeper = _line(fig, "rail"), _line(fig, "sleeper")
     t = rail.get_xdata()
-    assert t[0] == 0.0 and t[-1] == pytest.approx(TRACK.period)
+    assert t[0] == 0.0 and t[-1] == pytest.approx(PASSAGE.period)
     np.testing.assert_allclose(rail.get_ydata(), 1e3 * solution.rail_displacement(t), rtol=1e-12)
     np.testing.assert_allclose(sleeper.get_ydata(), 1e3 * solution.sleeper_displacement(t),
                                rtol=1e-12)
@@ -137,11 +143,11 @@ def test_rail_and_sleeper_plot_in_mm():
 
 
 def test_receptance_check_table_rows():
-    text = model.receptance_check_table(TRACK, [5.0, 50.0])
+    text = model.receptance_check_table(PASSAGE, [5.0, 50.0])
     lines = text.splitlines()
     assert len(lines) == 4
     closed = float(lines[3].split("|")[2])
-    assert closed == pytest.approx(rt.rail_receptance(TRACK, 50.0) * 1e6, rel=1e-8)
+    assert closed == pytest.approx(rt.rail_receptance(PASSAGE, 50.0) * 1e6, rel=1e-8)
 
 
 def test_notation_table_is_complete_and_lists_each_symbol_once():

@@ -19,19 +19,19 @@ import railtrack as rt  # noqa: E402
 from railtrack.plotting import rail_span as rs  # noqa: E402
 from railtrack.plotting.style import MM  # noqa: E402
 
-TRACK = rt.Track.paper()
+PASSAGE = rt.Passage.paper()
 
 
 def fake_solution():
     def w(t, x=0.0):
         return -1e-3 * np.cos(np.asarray(x)) * (1.0 + np.asarray(t))
-    return types.SimpleNamespace(track=TRACK, rail_displacement=w)
+    return types.SimpleNamespace(passage=PASSAGE, rail_displacement=w)
 
 
 def test_profiles_sample_the_field_at_the_wheel_instants():
     x, w = rs.rail_span_profiles(fake_solution(), [0.0, 0.3], points=11)
-    assert np.allclose(x, np.linspace(0.0, TRACK.sleeper_spacing, 11))
-    t = np.array([0.0, 0.3 / TRACK.speed])[:, None]
+    assert np.allclose(x, np.linspace(0.0, PASSAGE.sleeper_spacing, 11))
+    t = np.array([0.0, 0.3 / PASSAGE.speed])[:, None]
     assert np.allclose(w, -1e-3 * np.cos(x) * (1.0 + t))
 
 
@@ -50,11 +50,11 @@ def test_plot_draws_one_line_per_position_in_mm_against_m():
 
 
 def test_profile_ends_are_the_rail_above_the_two_sleepers():
-    sol = rt.solve(TRACK, rt.LinearFoundation.paper(), 15)
+    sol = rt.solve(PASSAGE.track, PASSAGE.train, rt.LinearFoundation.paper(), 15)
     positions = [0.0, 0.3]
     x, w = rs.rail_span_profiles(sol, positions)
-    t = np.array(positions) / TRACK.speed
+    t = np.array(positions) / PASSAGE.speed
     assert np.allclose(w[:, 0], sol.rail_displacement(t), rtol=0, atol=1e-15)
-    later = sol.rail_displacement(t - TRACK.sleeper_spacing / TRACK.speed)
+    later = sol.rail_displacement(t - PASSAGE.sleeper_spacing / PASSAGE.speed)
     assert np.allclose(w[:, -1], later, rtol=0, atol=1e-15)
     assert w[0, 0] < 0 and w[0, 0] == w[0].min()   # deepest under the wheel above the sleeper

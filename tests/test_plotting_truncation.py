@@ -3,19 +3,19 @@
 import numpy as np
 import pytest
 
-from railtrack import CubicFoundation, LinearFoundation, Track, solve
+from railtrack import CubicFoundation, LinearFoundation, Passage, Track, Train, solve
 from railtrack.plotting import truncation as pt
 
-STUDY = pt.truncation_study(Track.paper(), LinearFoundation.paper(), (18.0, 40.0))
+STUDY = pt.truncation_study(Passage.paper(), LinearFoundation.paper(), (18.0, 40.0))
 
 
 def test_errors_are_measured_against_a_much_larger_m():
     # for the linear law eq. (23) at m = 2000 is as good as exact
-    track = Track.paper(wagon_length=40.0)
-    exact = solve(track, LinearFoundation.paper(), 2000, method="analytic")
+    track, train = Track.paper(), Train.paper(wagon_length=40.0)
+    exact = solve(track, train, LinearFoundation.paper(), 2000, method="analytic")
     with pytest.warns(UserWarning):
-        truncated = solve(track, LinearFoundation.paper(), 15, method="analytic")
-    t = np.linspace(0.0, track.period, 20000, endpoint=False)
+        truncated = solve(track, train, LinearFoundation.paper(), 15, method="analytic")
+    t = np.linspace(0.0, train.period, 20000, endpoint=False)
     w = exact.sleeper_displacement(t)
     true = np.max(np.abs(truncated.sleeper_displacement(t) - w)) / np.max(np.abs(w))
     assert STUDY.error_15[1] == pytest.approx(true, rel=0.01)
@@ -38,5 +38,5 @@ def test_table_and_figure_show_every_wagon():
 
 
 def test_study_works_for_a_nonlinear_law():
-    study = pt.truncation_study(Track.paper(), CubicFoundation.paper(0.8), (18.0,))
+    study = pt.truncation_study(Passage.paper(), CubicFoundation.paper(0.8), (18.0,))
     assert study.estimate_15[0] == pytest.approx(study.error_15[0], rel=0.2)

@@ -23,36 +23,36 @@ import railtrack as rt  # noqa: E402
 from railtrack.plotting import verification as vf  # noqa: E402
 from railtrack.plotting.style import MM  # noqa: E402
 
-TRACK = rt.Track.paper()
+PASSAGE = rt.Passage.paper()
 LINEAR = rt.LinearFoundation.paper()
 COARSE = dict(elements_per_span=2, steps_per_period=600)
 
 
 @pytest.fixture(scope="module")
 def linear():
-    return vf.compare_case(TRACK, LINEAR, "linear", **COARSE)
+    return vf.compare_case(PASSAGE, LINEAR, "linear", **COARSE)
 
 
 @pytest.fixture(scope="module")
 def tensionless():
-    return vf.compare_case(TRACK, rt.BilinearFoundation.paper(0.0), "bilinear, e = 0", **COARSE)
+    return vf.compare_case(PASSAGE, rt.BilinearFoundation.paper(0.0), "bilinear, e = 0", **COARSE)
 
 
 def eq23(times, harmonics):
-    c = rt.analytic_coefficients(TRACK, LINEAR, harmonics)[harmonics:]
-    phase = TRACK.fundamental_frequency * np.outer(times, np.arange(1, harmonics + 1))
+    c = rt.analytic_coefficients(PASSAGE, LINEAR, harmonics)[harmonics:]
+    phase = PASSAGE.fundamental_frequency * np.outer(times, np.arange(1, harmonics + 1))
     return c[0].real + 2.0 * (np.cos(phase) @ c[1:].real - np.sin(phase) @ c[1:].imag)
 
 
 def test_compare_case_curves_on_the_fe_grid(linear):
-    np.testing.assert_allclose(linear.times, np.arange(600) * TRACK.period / 600, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(linear.times, np.arange(600) * PASSAGE.period / 600, rtol=0, atol=1e-15)
     np.testing.assert_allclose(linear.curves["reference"], eq23(linear.times, 200), rtol=0, atol=1e-15)
     np.testing.assert_allclose(linear.curves["newton"], eq23(linear.times, 15), rtol=0, atol=1e-15)
-    static = -2 * TRACK.wheel_load * TRACK.sleeper_spacing / (TRACK.wagon_length * LINEAR.stiffness)
+    static = -2 * PASSAGE.wheel_load * PASSAGE.sleeper_spacing / (PASSAGE.wagon_length * LINEAR.stiffness)
     for key in ("newton", "reference", "fe"):
         assert linear.means[key] == pytest.approx(static, rel=1e-9)
     # k = 100 steps of eq. (21) from zero leave c_0 q^k of the mean.
-    q = 1.0 - LINEAR.stiffness / TRACK.pad_stiffness
+    q = 1.0 - LINEAR.stiffness / PASSAGE.pad_stiffness
     assert linear.means["paper"] == pytest.approx(static * (1 - q**100), rel=1e-9)
 
 
@@ -109,7 +109,7 @@ def test_observed_orders_of_exact_power_laws():
 
 
 def test_convergence_study_coarse():
-    study = vf.convergence_study(TRACK, LINEAR, elements=(1, 2), steps=(300, 600), fixed_steps=600,
+    study = vf.convergence_study(PASSAGE, LINEAR, elements=(1, 2), steps=(300, 600), fixed_steps=600,
                                  fixed_elements=2, reference_harmonics=400)
     assert study.element_errors[1] == study.step_errors[1]  # the shared (2, 600) run
     assert np.all(np.diff(study.element_errors) < 0) and np.all(np.diff(study.step_errors) < 0)
@@ -136,7 +136,7 @@ def test_plots_draw_every_case(linear, tensionless):
     fig = vf.plot_error_budget([linear, tensionless])
     assert len(fig.axes[0].lines) == 3
     plt.close(fig)
-    assert vf.newton_solve_time(TRACK, LINEAR, repeats=3) > 0
+    assert vf.newton_solve_time(PASSAGE, LINEAR, repeats=3) > 0
 
 
 def test_identical_cases_share_one_row(linear, tensionless):

@@ -22,23 +22,23 @@ import railtrack as rt
 from railtrack import rail_field as rf
 from railtrack.receptance import bending_wavenumber, critical_frequency, rail_receptance
 
-TRACK = rt.Track.paper()
-L = TRACK.sleeper_spacing
+PASSAGE = rt.Passage.paper()
+L = PASSAGE.sleeper_spacing
 LINEAR = rt.LinearFoundation(20e6, 0.2e6)
 
 
-def solved(track=TRACK, foundation=LINEAR, m=15, method="newton"):
+def solved(passage=PASSAGE, foundation=LINEAR, m=15, method="newton"):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", rt.TruncationWarning)
-        return rt.solve(track, foundation, m, method=method)
+        return rt.solve(passage.track, passage.train, foundation, m, method=method)
 
 
 # --- x = 0 and the closed form ------------------------------------------------
 
 def test_offset_receptance_at_zero_is_eq_3():
     omega = np.array([-400.0, -3.0, 0.5, 15.7, 80.0, 900.0, 5000.0])
-    value = rf.offset_receptance(TRACK, omega, [0.0])[0]
-    assert np.max(np.abs(value - rail_receptance(TRACK, omega)) / np.abs(value)) < 1e-13
+    value = rf.offset_receptance(PASSAGE, omega, [0.0])[0]
+    assert np.max(np.abs(value - rail_receptance(PASSAGE, omega)) / np.abs(value)) < 1e-13
 
 
 def test_rail_displacement_at_zero_is_todays_result():
@@ -54,20 +54,20 @@ def test_rail_displacement_at_zero_is_todays_result():
 def test_closed_form_equals_brute_force_poisson_sum(derivative):
     omega = np.array([-300.0, -5.0, 1e-3, 3.0, 50.0, 500.0, 3000.0])
     x = np.array([0.0, 0.1, 0.3, 0.55, 0.6, -0.4, 1.7])
-    closed = rf.offset_receptance(TRACK, omega, x, derivative)
-    brute = rf.offset_receptance_lattice_sum(TRACK, omega, x, derivative, terms=200_000)
+    closed = rf.offset_receptance(PASSAGE, omega, x, derivative)
+    brute = rf.offset_receptance_lattice_sum(PASSAGE, omega, x, derivative, terms=200_000)
     # the curvature's brute sum falls like 1/terms
     tolerance = 1e-12 if derivative == 0 else 3e-6
     assert np.max(np.abs(closed - brute) / np.abs(brute)) < tolerance
 
 
-def brute_kernels(track, omega, xi, terms=200_000):
+def brute_kernels(passage, omega, xi, terms=200_000):
     """Lambda, Lambda_2 by summing j != 0 directly; Lambda_2's 1/(2 pi j)^2 part is summed as
     the Fourier series of a parabola, sum e^{-2 pi i j xi}/(2 pi j)^2 = (xi^2 - xi + 1/6)/2."""
     from railtrack.receptance import receptance_factors
-    q = omega * track.sleeper_spacing / track.speed
-    a = bending_wavenumber(track, omega) * track.sleeper_spacing
-    gap = receptance_factors(track, omega).gap
+    q = omega * passage.sleeper_spacing / passage.speed
+    a = bending_wavenumber(passage, omega) * passage.sleeper_spacing
+    gap = receptance_factors(passage, omega).gap
     j = np.arange(-terms, terms + 1)
     j = j[j != 0][:, None]
     u = q + 2 * np.pi * j
@@ -83,12 +83,12 @@ def brute_kernels(track, omega, xi, terms=200_000):
 
 
 def test_difference_kernels_against_brute_force_including_the_singular_frequencies():
-    star = critical_frequency(TRACK)
+    star = critical_frequency(PASSAGE)
     omega = np.array([0.0, 1e-6, 1e-2, 3.0, star, star * (1 + 1e-9), 15.7, 50.0, 120.0,
                       500.0, 3000.0, -50.0])
     xi = np.array([0.0, 0.1, 0.5, 0.77, 1.0])
-    lam, lam2 = rf.difference_kernels(TRACK, omega, xi)
-    ref, ref2 = brute_kernels(TRACK, omega, xi)
+    lam, lam2 = rf.difference_kernels(PASSAGE, omega, xi)
+    ref, ref2 = brute_kernels(PASSAGE, omega, xi)
     assert np.all(np.isfinite(lam)) and np.all(np.isfinite(lam2))
     assert np.max(np.abs(lam - ref)) < 1e-12 * np.max(np.abs(ref))
     assert np.max(np.abs(lam2 - ref2)) < 1e-10 * np.max(np.abs(ref2))
@@ -99,7 +99,7 @@ def test_difference_kernels_against_brute_force_including_the_singular_frequenci
 def test_periodicity_across_spans():
     sol = solved(foundation=rt.BilinearFoundation.paper(ratio=0.5))
     t = np.linspace(0.0, sol.period, 257)
-    v = TRACK.speed
+    v = PASSAGE.speed
     w0 = sol.rail_displacement(t - L / v)
     scale = np.max(np.abs(w0))
     # just below x = L the closed form (xi -> 1) must meet the next sleeper's history
@@ -150,16 +150,16 @@ def fe_beam(ei, span, k_s, loads, x_obs, half_length=40.0, per_span=4):
 
 
 def test_static_limit_equals_a_beam_on_discrete_springs():
-    track = TRACK.replace(speed=1e-3, wagon_length=120 * L)   # neighbours 72 m away
+    passage = PASSAGE.replace(speed=1e-3, wagon_length=120 * L)   # neighbours 72 m away
     k2 = 20e6
-    k_s = track.pad_stiffness * k2 / (track.pad_stiffness + k2)
+    k_s = passage.pad_stiffness * k2 / (passage.pad_stiffness + k2)
     foundation = rt.LinearFoundation(k2, 0.0)
-    sols = {m: solved(track, foundation, m, "analytic") for m in (1600, 3200)}
+    sols = {m: solved(passage, foundation, m, "analytic") for m in (1600, 3200)}
     x_obs = np.array([0.0, L / 2])
     for front in (0.0, L / 4, L / 2):        # front wheel above the sleeper, a quarter, mid-span
-        t = front / track.speed
-        loads = [(front, track.wheel_load), (front - track.wheel_spacing, track.wheel_load)]
-        w_fe, m_fe = fe_beam(track.rail_bending_stiffness, L, k_s, loads, x_obs)
+        t = front / passage.speed
+        loads = [(front, passage.wheel_load), (front - passage.wheel_spacing, passage.wheel_load)]
+        w_fe, m_fe = fe_beam(passage.rail_bending_stiffness, L, k_s, loads, x_obs)
         w = sols[1600].rail_displacement(t, x_obs)
         assert np.max(np.abs(w - w_fe) / np.abs(w_fe)) < 1e-6
         moment = sols[3200].rail_bending_moment(t, x_obs)
@@ -174,7 +174,7 @@ def test_static_limit_equals_a_beam_on_discrete_springs():
 # --- Winkler limit ------------------------------------------------------------------
 
 def test_winkler_limit_of_closely_spaced_sleepers():
-    base = TRACK.replace(speed=1e-3, wagon_length=12.0, wheel_spacing=6.0)
+    base = rt.Passage(rt.Track.paper(), rt.Train.paper(wheel_spacing=6.0, speed=1e-3, wagon_length=12.0))
     k2 = 20e6
     per_metre = base.pad_stiffness * k2 / (base.pad_stiffness + k2) / L
     ei, load = base.rail_bending_stiffness, base.wheel_load
@@ -187,10 +187,10 @@ def test_winkler_limit_of_closely_spaced_sleepers():
     w_err, m_err = [], []
     for span in (0.6, 0.3, 0.15, 0.075):
         s = span / L
-        track = base.replace(sleeper_spacing=span, pad_stiffness=base.pad_stiffness * s,
-                             sleeper_mass=base.sleeper_mass * s)
+        passage = base.replace(sleeper_spacing=span, pad_stiffness=base.pad_stiffness * s,
+                               sleeper_mass=base.sleeper_mass * s)
         foundation = rt.LinearFoundation(k2 * s, 0.0)
-        one, two = (solved(track, foundation, m, "analytic") for m in (1000, 2000))
+        one, two = (solved(passage, foundation, m, "analytic") for m in (1000, 2000))
         w_err.append(two.rail_displacement(0.0)[()] / w_ref - 1)
         moment = 2 * two.rail_bending_moment(0.0) - one.rail_bending_moment(0.0)
         m_err.append(moment[()] / m_ref - 1)
@@ -209,18 +209,18 @@ def test_mean_rail_seat_load_is_the_train_weight_per_sleeper(foundation):
     sol = solved(foundation=foundation, m=31)
     t = np.linspace(0.0, sol.period, 4096, endpoint=False)
     seat = sol.rail_seat_load(t)
-    target = 2 * TRACK.wheel_load * L / TRACK.wagon_length
+    target = 2 * PASSAGE.wheel_load * L / PASSAGE.wagon_length
     assert abs(seat.mean() / target - 1) < 1e-12
     assert seat.max() > target                # compression positive: peaks under the wheels
-    # the foundation carries the same mean in compression (f > 0 is tension; the sleeper's
-    # mass has no mean acceleration); the solver balances the mean on its own AFT grid, so
-    # a kinked law sampled more finely differs by a few 1e-6
-    assert abs(-sol.foundation_force(t).mean() / target - 1) < 1e-4
+    # the foundation carries the same mean in compression (foundation_force is positive in
+    # compression; the sleeper's mass has no mean acceleration); the solver balances the mean
+    # on its own AFT grid, so a kinked law sampled more finely differs by a few 1e-6
+    assert abs(sol.foundation_force(t).mean() / target - 1) < 1e-4
     # the pad law of eq. (5), with the rail's velocity by central differences
     h = 1e-7
     rail_velocity = (sol.rail_displacement(t + h) - sol.rail_displacement(t - h)) / (2 * h)
-    pad = (TRACK.pad_stiffness * (sol.sleeper_displacement(t) - sol.rail_displacement(t))
-           + TRACK.pad_damping * (sol.sleeper_velocity(t) - rail_velocity))
+    pad = (PASSAGE.pad_stiffness * (sol.sleeper_displacement(t) - sol.rail_displacement(t))
+           + PASSAGE.pad_damping * (sol.sleeper_velocity(t) - rail_velocity))
     assert np.max(np.abs(seat - pad)) < 1e-6 * np.max(np.abs(seat))
 
 
@@ -229,8 +229,9 @@ def test_rail_seat_load_balances_the_sleeper():
     t = np.linspace(0.0, sol.period, 600)
     omega = sol.frequencies
     acceleration = np.real(np.exp(1j * np.outer(t, omega)) @ (-(omega**2) * sol.coefficients))
-    # eq. (4): M w'' + f = -(pad force on the sleeper, compression positive)
-    sleeper = -(TRACK.sleeper_mass * acceleration + sol.foundation_force(t))
+    # eq. (4): M w'' + f = -(pad force on the sleeper, compression positive), where the law's
+    # f is minus the foundation force (which is compression positive)
+    sleeper = sol.foundation_force(t) - PASSAGE.sleeper_mass * acceleration
     seat = sol.rail_seat_load(t)
     assert np.max(np.abs(seat - sleeper)) < 1e-9 * np.max(np.abs(seat))
 
@@ -242,11 +243,15 @@ def test_bending_moment_is_ei_times_the_second_difference_of_the_displacement():
     h = 1e-3
     x = np.array([0.07, 0.2, 0.31, 0.52, 1.1, -0.25])
     t = np.array([0.05, 0.13, 0.31]) * sol.period    # no wheel within h of these x
-    wheels = np.mod(TRACK.speed * t[:, None] - np.array([0.0, -TRACK.wheel_spacing]), TRACK.wagon_length)
-    assert np.min(np.abs(np.mod(wheels[..., None] - x, TRACK.wagon_length))) > 0.01
+    wheels = np.mod(PASSAGE.speed * t[:, None] - np.array([0.0, -PASSAGE.wheel_spacing]), PASSAGE.wagon_length)
+    assert np.min(np.abs(np.mod(wheels[..., None] - x, PASSAGE.wagon_length))) > 0.01
     T, X = np.meshgrid(t, x, indexing="ij")
-    second = (sol.rail_displacement(T, X + h) - 2 * sol.rail_displacement(T, X)
-              + sol.rail_displacement(T, X - h)) / h**2
+    # the moment at m = 25 sums its kinks in closed form; the displacement's
+    # second difference has them only up to m, so take it from m = 400, where
+    # away from the wheels the plain series has converged
+    fine = solved(foundation=rt.CubicFoundation.paper(), m=400)
+    second = (fine.rail_displacement(T, X + h) - 2 * fine.rail_displacement(T, X)
+              + fine.rail_displacement(T, X - h)) / h**2
     moment = sol.rail_bending_moment(T, X)
-    ei = TRACK.rail_bending_stiffness
-    assert np.max(np.abs(moment - ei * second)) < 1e-5 * np.max(np.abs(moment))
+    ei = PASSAGE.rail_bending_stiffness
+    assert np.max(np.abs(moment - ei * second)) < 2e-3 * np.max(np.abs(moment))

@@ -1,6 +1,6 @@
 """The time-domain FE model (`railtrack.timedomain`) against the semi-analytical method.
 
-The two share nothing but `Track` and the foundation laws: the FE ring is
+The two share nothing but `Track`, `Train` and the foundation laws: the FE ring is
 integrated in time by Newmark's scheme, the semi-analytical solution is a
 Fourier series from eq. (23) or Newton on eq. (17).  Tolerances come from
 the convergence study of the FE model on the paper's linear case, sleeper 0,
@@ -37,7 +37,9 @@ from railtrack import (
     BilinearFoundation,
     CubicFoundation,
     LinearFoundation,
+    Passage,
     Track,
+    Train,
     solve,
 )
 from railtrack.fem import ring_mesh, wheel_load_entries
@@ -46,6 +48,7 @@ from railtrack.timedomain import TimeDomainSolution, simulate_time_domain
 from railtrack.timestep import TimeStepWarning, estimate_step_error
 
 TRACK = Track.paper()
+TRAIN = Train.paper()
 SLEEPERS = 30  # H / L for the paper's train
 STEPS = 2400  # default, a multiple of H / L: the delay L / v is 80 steps
 
@@ -53,7 +56,7 @@ STEPS = 2400  # default, a multiple of H / L: the delay L / v is 80 steps
 @pytest.fixture(scope="module")
 def tensionless() -> TimeDomainSolution:
     """The strongest nonlinearity of the paper: no tension stiffness, eq. (24)."""
-    return simulate_time_domain(TRACK, BilinearFoundation.paper(ratio=0.0))
+    return simulate_time_domain(TRACK, TRAIN, BilinearFoundation.paper(ratio=0.0))
 
 
 def test_tiny_speed_reproduces_static_solutions():
@@ -65,13 +68,13 @@ def test_tiny_speed_reproduces_static_solutions():
     # cubics), so one element per span suffices; the 120 steps only sample
     # the load positions.  Tolerance 2e-8 m: 4x the lag, 5e4 times below the
     # 1.1e-3 m peak.
-    track = Track.paper(speed=1e-3)
+    train = Train.paper(speed=1e-3)
     foundation = LinearFoundation.paper()
-    result = simulate_time_domain(track, foundation, elements_per_span=1, steps_per_period=120)
+    result = simulate_time_domain(TRACK, train, foundation, elements_per_span=1, steps_per_period=120)
     assert result.converged
 
     # Static FE ring with the wheels frozen at each sampled position.
-    mesh = ring_mesh(track, 1)
+    mesh = ring_mesh(Passage(TRACK, train), 1)
     springs = sp.csc_matrix(
         (np.full(SLEEPERS, foundation.stiffness), (mesh.sleeper_dofs, mesh.sleeper_dofs)),
         shape=mesh.stiffness.shape,
@@ -86,7 +89,7 @@ def test_tiny_speed_reproduces_static_solutions():
     np.testing.assert_allclose(result.rail_displacement, static[:, mesh.rail_dofs[0]], rtol=0, atol=2e-8)
 
     # The semi-analytical eq. (23) at the same speed (the same lag included).
-    analytic = solve(track, foundation, harmonics=600, method="analytic")
+    analytic = solve(TRACK, train, foundation, harmonics=600, method="analytic")
     np.testing.assert_allclose(
         result.sleeper_displacement, analytic.sleeper_displacement(result.times), rtol=0, atol=2e-8
     )
@@ -95,13 +98,13 @@ def test_tiny_speed_reproduces_static_solutions():
 
 def test_linear_foundation_matches_analytic_eq23():
     foundation = LinearFoundation.paper()
-    reference = solve(TRACK, foundation, harmonics=200, method="analytic")
-    finer = solve(TRACK, foundation, harmonics=400, method="analytic")
-    t = np.linspace(0.0, TRACK.period, 1200, endpoint=False)
+    reference = solve(TRACK, TRAIN, foundation, harmonics=200, method="analytic")
+    finer = solve(TRACK, TRAIN, foundation, harmonics=400, method="analytic")
+    t = np.linspace(0.0, TRAIN.period, 1200, endpoint=False)
     # The reference is converged in m to 6e-10 m, below the FE error.
     assert np.max(np.abs(reference.sleeper_displacement(t) - finer.sleeper_displacement(t))) < 1e-9
 
-    result = simulate_time_domain(TRACK, foundation)
+    result = simulate_time_domain(TRACK, TRAIN, foundation)
     assert result.converged and result.periods >= 2
     error = np.max(np.abs(result.sleeper_displacement - reference.sleeper_displacement(result.times)))
     rail_error = np.max(np.abs(result.rail_displacement - reference.rail_displacement(result.times)))
@@ -112,7 +115,7 @@ def test_linear_foundation_matches_analytic_eq23():
 
     # Second order in time: halving the steps quadruples the error
     # (measured ratio 4.1; the mesh error at 8 per span is far smaller).
-    coarse = simulate_time_domain(TRACK, foundation, steps_per_period=STEPS // 2)
+    coarse = simulate_time_domain(TRACK, TRAIN, foundation, steps_per_period=STEPS // 2)
     coarse_error = np.max(
         np.abs(coarse.sleeper_displacement - reference.sleeper_displacement(coarse.times))
     )
@@ -142,7 +145,7 @@ def test_tensionless_foundation_matches_newton(tensionless):
     assert result.converged
     assert np.all(np.isfinite(result.sleeper_displacements))
     assert result.sleeper_displacement.max() > 2e-4  # the sleeper does lift off
-    reference = solve(TRACK, BilinearFoundation.paper(ratio=0.0), harmonics=400)
+    reference = solve(TRACK, TRAIN, BilinearFoundation.paper(ratio=0.0), harmonics=400)
     assert reference.converged
     error = np.max(np.abs(result.sleeper_displacement - reference.sleeper_displacement(result.times)))
     # Measured 6.9e-9 m.  The kink of eq. (24) makes the harmonic series
@@ -153,9 +156,9 @@ def test_tensionless_foundation_matches_newton(tensionless):
 
 def test_cubic_foundation_matches_newton():
     foundation = CubicFoundation.paper(epsilon=0.8)
-    result = simulate_time_domain(TRACK, foundation)
+    result = simulate_time_domain(TRACK, TRAIN, foundation)
     assert result.converged
-    reference = solve(TRACK, foundation, harmonics=200)
+    reference = solve(TRACK, TRAIN, foundation, harmonics=200)
     assert reference.converged
     error = np.max(np.abs(result.sleeper_displacement - reference.sleeper_displacement(result.times)))
     rail_error = np.max(np.abs(result.rail_displacement - reference.rail_displacement(result.times)))
@@ -192,8 +195,8 @@ def test_result_does_not_depend_on_the_factored_reference_law(law):
     # the static deflection, 3e-15 m) accumulated over the steps: measured
     # 3e-17 m, so 1e-12 m is ample, while stopping Newton after the first
     # evaluation (g lagged by a step) makes them differ by 2e-5 m.
-    default = simulate_time_domain(TRACK, law, 2, 600)
-    shifted = simulate_time_domain(TRACK, _OtherReference(law, 1e8, 1e6), 2, 600)
+    default = simulate_time_domain(TRACK, TRAIN, law, 2, 600)
+    shifted = simulate_time_domain(TRACK, TRAIN, _OtherReference(law, 1e8, 1e6), 2, 600)
     np.testing.assert_allclose(shifted.sleeper_displacement, default.sleeper_displacement, rtol=0, atol=1e-12)
 
 
@@ -202,40 +205,40 @@ def test_start_from_rest_reaches_the_same_steady_state():
     # Each stops once a period changes by <= 1e-6 x peak (1.1e-9 m) and the
     # transient left then is of that order, so they agree within 3e-9 m.
     foundation = BilinearFoundation.paper(ratio=0.5)
-    static = simulate_time_domain(TRACK, foundation, 2, 600)
-    rest = simulate_time_domain(TRACK, foundation, 2, 600, start="rest")
+    static = simulate_time_domain(TRACK, TRAIN, foundation, 2, 600)
+    rest = simulate_time_domain(TRACK, TRAIN, foundation, 2, 600, start="rest")
     assert static.converged and rest.converged
     np.testing.assert_allclose(rest.sleeper_displacement, static.sleeper_displacement, rtol=0, atol=3e-9)
 
 
 def test_reports_not_converged_after_max_periods():
-    result = simulate_time_domain(TRACK, LinearFoundation.paper(), 1, 120, max_periods=1)
+    result = simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 1, 120, max_periods=1)
     assert not result.converged
     assert result.periods == 1 and result.period_change.size == 0
-    result = simulate_time_domain(TRACK, LinearFoundation.paper(), 1, 120, max_periods=2, tol=1e-3)
+    result = simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 1, 120, max_periods=2, tol=1e-3)
     assert result.periods == 2 and result.period_change.size == 1
 
 
 @pytest.mark.parametrize(
-    "track, arguments, match",
+    "track, train, arguments, match",
     [
-        (Track.paper(wagon_length=18.3), {}, "H/L"),
-        (Track.paper(sleeper_spacing=0.65), {}, "H/L"),
-        (TRACK, {"elements_per_span": 0}, "elements_per_span"),
-        (TRACK, {"elements_per_span": 2.5}, "elements_per_span"),
-        (TRACK, {"steps_per_period": 0}, "steps_per_period"),
-        (TRACK, {"steps_per_period": -10}, "steps_per_period"),
-        (TRACK, {"steps_per_period": True}, "steps_per_period"),
-        (TRACK, {"steps_per_period": 100}, "multiple of H/L = 30"),
-        (TRACK, {"warn_step_error": 0.0}, "warn_step_error"),
-        (TRACK, {"max_periods": 0}, "max_periods"),
-        (TRACK, {"tol": 0.0}, "tol"),
-        (TRACK, {"start": "moving"}, "start"),
+        (TRACK, Train.paper(wagon_length=18.3), {}, "H/L"),
+        (Track.paper(sleeper_spacing=0.65), TRAIN, {}, "H/L"),
+        (TRACK, TRAIN, {"elements_per_span": 0}, "elements_per_span"),
+        (TRACK, TRAIN, {"elements_per_span": 2.5}, "elements_per_span"),
+        (TRACK, TRAIN, {"steps_per_period": 0}, "steps_per_period"),
+        (TRACK, TRAIN, {"steps_per_period": -10}, "steps_per_period"),
+        (TRACK, TRAIN, {"steps_per_period": True}, "steps_per_period"),
+        (TRACK, TRAIN, {"steps_per_period": 100}, "multiple of H/L = 30"),
+        (TRACK, TRAIN, {"warn_step_error": 0.0}, "warn_step_error"),
+        (TRACK, TRAIN, {"max_periods": 0}, "max_periods"),
+        (TRACK, TRAIN, {"tol": 0.0}, "tol"),
+        (TRACK, TRAIN, {"start": "moving"}, "start"),
     ],
 )
-def test_bad_input_raises_value_error(track, arguments, match):
+def test_bad_input_raises_value_error(track, train, arguments, match):
     with pytest.raises(ValueError, match=match):
-        simulate_time_domain(track, LinearFoundation.paper(), **arguments)
+        simulate_time_domain(track, train, LinearFoundation.paper(), **arguments)
 
 
 # --- Failure modes of issue 7, section 2: each test failed before the fix. ---
@@ -248,21 +251,21 @@ def test_steps_that_cannot_represent_the_moving_load_are_refused(steps, match):
     # 30 (one step per L / v, the sleeper-passing frequency aliased to zero)
     # a 1.2 % error marked converged.
     with pytest.raises(ValueError, match=match) as info:
-        simulate_time_domain(TRACK, LinearFoundation.paper(), 8, steps)
+        simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 8, steps)
     assert "Use" in str(info.value)  # the message says what to pass instead
 
 
 def test_coarse_steps_warn_with_the_estimated_error():
     # 90 steps (3 per L / v): measured 1.17e-3 of the peak, estimated the same.
     with pytest.warns(TimeStepWarning, match=r"estimated time-step error is 0\.117 % .* >= 120"):
-        result = simulate_time_domain(TRACK, LinearFoundation.paper(), 8, 90)
+        result = simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 8, 90)
     assert 1.1e-3 < result.step_error < 1.25e-3
     # A deliberate study can ask for a looser bound, or skip the estimate.
     with warnings.catch_warnings():
         warnings.simplefilter("error", TimeStepWarning)
-        assert simulate_time_domain(TRACK, LinearFoundation.paper(), 2, 90,
+        assert simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 2, 90,
                                     warn_step_error=2e-3).step_error > 1e-3
-        assert np.isnan(simulate_time_domain(TRACK, LinearFoundation.paper(), 2, 90,
+        assert np.isnan(simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 2, 90,
                                              warn_step_error=None).step_error)
 
 
@@ -273,22 +276,22 @@ def test_step_error_estimate_matches_the_measured_error(law, steps):
     # < 1e-9 of the peak here): estimate / measured = 0.99 to 1.07 for both
     # laws; the issue asks for a factor 3.  (For the kinked tensionless law
     # the linearization underestimates by 1.3-3x; not tested.)
-    reference = solve(TRACK, law, 200, method="analytic" if isinstance(law, LinearFoundation) else "newton")
+    reference = solve(TRACK, TRAIN, law, 200, method="analytic" if isinstance(law, LinearFoundation) else "newton")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", TimeStepWarning)
-        result = simulate_time_domain(TRACK, law, 8, steps, max_periods=60)
+        result = simulate_time_domain(TRACK, TRAIN, law, 8, steps, max_periods=60)
     exact = reference.sleeper_displacement(result.times)
     measured = np.max(np.abs(result.sleeper_displacement - exact)) / np.max(np.abs(exact))
     assert 1 / 3 < result.step_error / measured < 3
 
 
 def test_step_error_estimate_is_second_order_and_vanishes_when_quasi_static():
-    errors = [estimate_step_error(TRACK, 20e6, 0.2e6, n)[0] for n in (600, 1200, 2400, 4800, 48000)]
+    errors = [estimate_step_error(Passage(TRACK, TRAIN), 20e6, 0.2e6, n)[0] for n in (600, 1200, 2400, 4800, 48000)]
     orders = np.log2(np.array(errors[:3]) / np.array(errors[1:4]))
     np.testing.assert_allclose(orders, 2.0, atol=0.1)
     assert errors[4] == pytest.approx(errors[3] / 100, rel=0.05)
     # At 1 mm/s inertia is negligible: only the dashpots' lag is left to err.
-    assert estimate_step_error(Track.paper(speed=1e-3), 20e6, 0.2e6, 120)[0] < 1e-7
+    assert estimate_step_error(Passage.paper(speed=1e-3), 20e6, 0.2e6, 120)[0] < 1e-7
 
 
 def _nan_below_a_millimetre(w, v):
@@ -309,7 +312,7 @@ def _nan_when_fast(w, v):
 def test_law_returning_nan_is_named_with_where_it_happened(law, start, match):
     # Used to end in "RuntimeError: Newton ... did not converge (mismatch nan ...)".
     with pytest.raises(ValueError, match=match) as info:
-        simulate_time_domain(TRACK, law, start=start)
+        simulate_time_domain(TRACK, TRAIN, law, start=start)
     assert "must return finite forces" in str(info.value)
 
 
@@ -321,7 +324,7 @@ def test_unstable_track_says_it_grew_without_bound(law, at_rest):
     # Used to end in "RuntimeError: Newton ... did not converge (mismatch nan ...)".
     with pytest.raises(RuntimeError, match=r"grew without bound in period 1: .* at step \d+ of 2400 .*"
                        r"the system is unstable.*" + at_rest) as info:
-        simulate_time_domain(TRACK, law)
+        simulate_time_domain(TRACK, TRAIN, law)
     assert "negative stiffness or damping" in str(info.value)
 
 
@@ -332,7 +335,7 @@ def test_huge_runs_are_refused_before_allocating(elements, steps):
     try:
         with pytest.raises(ValueError, match=r"would need about [\d.]+ GB of memory.*above the 4 GB "
                            r"limit.*per period\. Use fewer steps or elements"):
-            simulate_time_domain(TRACK, LinearFoundation.paper(), elements, steps)
+            simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), elements, steps)
         peak = tracemalloc.get_traced_memory()[1]
     finally:
         tracemalloc.stop()
@@ -348,7 +351,7 @@ def test_long_runs_warn_with_the_estimated_time():
     with warnings.catch_warnings():
         warnings.simplefilter("error", LongRunWarning)  # stop the call at the warning
         with pytest.raises(LongRunWarning):
-            simulate_time_domain(TRACK, LinearFoundation.paper(), 8, 2_400_000)
+            simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 8, 2_400_000)
     assert time.perf_counter() - began < 1.0
     with warnings.catch_warnings():
         warnings.simplefilter("error", LongRunWarning)

@@ -19,6 +19,7 @@ from railtrack import (
     CubicFoundation,
     LinearFoundation,
     Track,
+    Train,
     TruncationWarning,
     solve,
 )
@@ -32,8 +33,11 @@ LAWS = {
 WAGONS = (18.0, 26.4, 40.0, 60.0, 180.0)
 
 
-def _track(wagon_length: float) -> Track:
-    return Track.paper(wagon_length=wagon_length)
+TRACK = Track.paper()
+
+
+def _train(wagon_length: float) -> Train:
+    return Train.paper(wagon_length=wagon_length)
 
 
 def _reference_harmonics(wagon_length: float) -> int:
@@ -45,21 +49,21 @@ def _reference_harmonics(wagon_length: float) -> int:
 
 @lru_cache(maxsize=None)
 def _reference(wagon_length: float, name: str):
-    track, law = _track(wagon_length), LAWS[name]
+    train, law = _train(wagon_length), LAWS[name]
     m = _reference_harmonics(wagon_length)
     if name == "linear":
-        return solve(track, law, m, method="analytic")
+        return solve(TRACK, train, law, m, method="analytic")
     # start from a converged smaller solve, padded: Newton then needs few steps
-    start = solve(track, law, accuracy=1e-4, strict=True, max_iterations=300)
+    start = solve(TRACK, train, law, accuracy=1e-4, strict=True, max_iterations=300)
     initial = np.zeros(m + 1, dtype=complex)
     initial[: start.harmonics + 1] = start.coefficients[start.harmonics :]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", TruncationWarning)
-        return solve(track, law, m, initial=initial, strict=True, max_iterations=300)
+        return solve(TRACK, train, law, m, initial=initial, strict=True, max_iterations=300)
 
 
 def _true_error(solution) -> float:
-    reference = _reference(solution.track.wagon_length, _name(solution.foundation))
+    reference = _reference(solution.train.wagon_length, _name(solution.foundation))
     t = np.linspace(0.0, solution.period, 8 * reference.harmonics, endpoint=False)
     exact = reference.sleeper_displacement(t)
     return float(np.max(np.abs(solution.sleeper_displacement(t) - exact)) / np.max(np.abs(exact)))
@@ -75,7 +79,7 @@ def _name(foundation) -> str:
 def test_estimate_is_within_a_factor_3_of_the_true_error_at_m15(wagon_length, name):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", TruncationWarning)
-        solution = solve(_track(wagon_length), LAWS[name], 15, strict=True)
+        solution = solve(TRACK, _train(wagon_length), LAWS[name], 15, strict=True)
     true = _true_error(solution)
     assert true / 3 <= solution.truncation_error <= 3 * true, (true, solution.truncation_error)
 
@@ -85,7 +89,7 @@ def test_estimate_is_within_a_factor_3_of_the_true_error_at_m15(wagon_length, na
 @pytest.mark.parametrize("name", sorted(LAWS))
 @pytest.mark.parametrize("wagon_length", WAGONS)
 def test_auto_meets_its_accuracy_and_estimates_it(wagon_length, name, accuracy):
-    solution = solve(_track(wagon_length), LAWS[name], accuracy=accuracy, strict=True)
+    solution = solve(TRACK, _train(wagon_length), LAWS[name], accuracy=accuracy, strict=True)
     true = _true_error(solution)
     assert true <= accuracy, (solution.harmonics, true)
     assert solution.truncation_error <= accuracy
@@ -93,7 +97,7 @@ def test_auto_meets_its_accuracy_and_estimates_it(wagon_length, name, accuracy):
 
 
 def test_the_needed_m_grows_with_the_wagon_length():
-    needed = [solve(_track(h), LAWS["cubic eps=0.8"]).harmonics for h in WAGONS]
+    needed = [solve(TRACK, _train(h), LAWS["cubic eps=0.8"]).harmonics for h in WAGONS]
     assert needed == sorted(needed) and needed[-1] > 8 * needed[0]
     # roughly proportional to H / L, the harmonics per sleeper-passing frequency
     per_span = np.array(needed) / (np.array(WAGONS) / 0.6)
@@ -101,20 +105,20 @@ def test_the_needed_m_grows_with_the_wagon_length():
 
 
 def test_linear_estimate_is_the_exact_tail_of_eq23():
-    track, law = _track(40.0), LAWS["linear"]
+    train, law = _train(40.0), LAWS["linear"]
     with pytest.warns(TruncationWarning):
-        truncated = solve(track, law, 15, method="analytic")
-    exact = solve(track, law, 2000, method="analytic")
-    t = np.linspace(0.0, track.period, 16000, endpoint=False)
+        truncated = solve(TRACK, train, law, 15, method="analytic")
+    exact = solve(TRACK, train, law, 2000, method="analytic")
+    t = np.linspace(0.0, train.period, 16000, endpoint=False)
     w = exact.sleeper_displacement(t)
     true = np.max(np.abs(truncated.sleeper_displacement(t) - w)) / np.max(np.abs(w))
     assert truncated.truncation_error == pytest.approx(true, rel=0.02)
 
 
 def test_every_method_reports_the_same_estimate_for_the_same_answer():
-    track, law = Track.paper(), LAWS["linear"]
-    estimates = [solve(track, law, 15, method="analytic").truncation_error] + [
-        solve(track, law, 15, method=m, max_iterations=400).truncation_error
+    track, train, law = Track.paper(), Train.paper(), LAWS["linear"]
+    estimates = [solve(track, train, law, 15, method="analytic").truncation_error] + [
+        solve(track, train, law, 15, method=m, max_iterations=400).truncation_error
         for m in ("newton", "fixed-point")]
     assert np.ptp(estimates) < 1e-6 * estimates[0]
     assert 0.003 < estimates[0] < 0.008   # the paper's m = 15 misses about 0.5 % of the peak
@@ -122,18 +126,18 @@ def test_every_method_reports_the_same_estimate_for_the_same_answer():
 
 def test_explicit_m_warns_above_one_percent_and_names_the_fix():
     with pytest.warns(TruncationWarning, match=r"harmonics=15.*'auto' picks m = \d+"):
-        solve(_track(60.0), LAWS["cubic eps=0.8"], 15)
+        solve(TRACK, _train(60.0), LAWS["cubic eps=0.8"], 15)
     with warnings.catch_warnings():
         warnings.simplefilter("error", TruncationWarning)
-        solve(Track.paper(), LAWS["cubic eps=0.8"], 15)   # 0.6 %: the paper's case is quiet
+        solve(Track.paper(), Train.paper(), LAWS["cubic eps=0.8"], 15)   # 0.6 %: the paper's case is quiet
 
 
 def test_auto_is_the_default_and_refuses_what_needs_an_explicit_m():
-    solution = solve(Track.paper(), LAWS["cubic eps=0.8"])
+    solution = solve(Track.paper(), Train.paper(), LAWS["cubic eps=0.8"])
     assert solution.harmonics > 15 and solution.truncation_error <= 1e-3
     with pytest.raises(ValueError, match="explicit harmonics"):
-        solve(Track.paper(), LAWS["cubic eps=0.8"], samples=1024)
+        solve(Track.paper(), Train.paper(), LAWS["cubic eps=0.8"], samples=1024)
     with pytest.raises(ValueError, match="accuracy"):
-        solve(Track.paper(), LAWS["linear"], accuracy=1.5)
+        solve(Track.paper(), Train.paper(), LAWS["linear"], accuracy=1.5)
     with pytest.warns(UserWarning, match="accuracy"):
-        solve(Track.paper(), LAWS["linear"], 15, accuracy=1e-4)
+        solve(Track.paper(), Train.paper(), LAWS["linear"], 15, accuracy=1e-4)

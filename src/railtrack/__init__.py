@@ -5,11 +5,13 @@ A reproduction of T. Hoang, D. Duhamel, G. Foret, H.P. Yin, G. Cumunel,
 tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 
 =====================  ==============================================
-`railtrack.track`      parameters (Table 1)
+`railtrack.track`      the track: rail, pads, sleepers (Table 1)
+`railtrack.train`      the train: wagon length, axles, loads, speed
+`railtrack.passage`    the train on the track, as the equations take it
 `railtrack.receptance` Section 2.1, eq. (3): the rail's receptance
 `railtrack.rail_field` eq. (3) at any offset x: the rail between sleepers
 `railtrack.sleeper`    Section 2.2, eqs. (4)–(8), (14): pad, coupling P
-`railtrack.train`      Section 2.3, eqs. (9)–(16): the load F
+`railtrack.load`       Section 2.3, eqs. (9)–(16): the load F
 `railtrack.harmonic_balance`  Section 3, eqs. (17)–(20): residual, AFT
 `railtrack.fixed_point`       eq. (21): the paper's iteration
 `railtrack.newton`     Newton's method on eq. (17)
@@ -24,10 +26,10 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 =====================  ==============================================
 
 SI units throughout.  w is positive upward (the train pushes it negative);
-t = 0 when a front wheel is above the observed sleeper.
+t = 0 when a wagon's first axle is above the observed sleeper.
 
 >>> import railtrack
->>> solution = railtrack.solve(railtrack.Track.paper(),
+>>> solution = railtrack.solve(railtrack.Track.paper(), railtrack.Train.paper(),
 ...                            railtrack.BilinearFoundation.paper(ratio=0.5))
 >>> solution.converged
 True
@@ -50,13 +52,17 @@ from .newmark import NonFiniteLawError
 from .runcost import LongRunWarning
 from .timedomain import TimeDomainSolution, simulate_time_domain
 from .timestep import TimeStepWarning, estimate_step_error
+from .load import axle_factor, load_coefficients
+from .passage import Passage
 from .track import Track
-from .train import load_coefficients
+from .train import Train
 
 __version__ = "0.1.0"
 
 __all__ = [
     "Track",
+    "Train",
+    "Passage",
     "LinearFoundation",
     "BilinearFoundation",
     "CubicFoundation",
@@ -75,6 +81,7 @@ __all__ = [
     "offset_receptance",
     "rail_coupling",
     "load_coefficients",
+    "axle_factor",
     "simulate_time_domain",
     "TimeDomainSolution",
     "TimeStepWarning",

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .track import Track
+from .passage import Passage
 
 __all__ = ["ROUNDOFF_LIMIT", "roundoff_estimate", "check_conditioning"]
 
@@ -18,7 +18,7 @@ ROUNDOFF_LIMIT = 1e-6
 """Largest estimated round-off (relative) of eq. (3) that `check_conditioning` accepts."""
 
 
-def roundoff_estimate(track: Track) -> float:
+def roundoff_estimate(passage: Passage) -> float:
     """Estimated relative round-off in the response computed from eq. (3) [-].
 
     The numerator of `receptance_factors` is the difference of two terms of
@@ -30,12 +30,12 @@ def roundoff_estimate(track: Track) -> float:
     is between 1 and 4 times the actual error of the sleeper displacement
     (tests/test_failure_modes.py): a cautious estimate.
     """
-    omega_1 = 2.0 * np.pi * track.speed / track.wagon_length
-    r_squared = omega_1 * np.sqrt(track.rail_bending_stiffness / track.rail_linear_mass) / track.speed**2
+    omega_1 = 2.0 * np.pi * passage.speed / passage.wagon_length
+    r_squared = omega_1 * np.sqrt(passage.rail_bending_stiffness / passage.rail_linear_mass) / passage.speed**2
     return float(np.finfo(float).eps * r_squared)
 
 
-def check_conditioning(track: Track) -> None:
+def check_conditioning(passage: Passage) -> None:
     """Refuse a track for which eq. (3), as evaluated here, would lose accuracy.
 
     Raises
@@ -46,18 +46,18 @@ def check_conditioning(track: Track) -> None:
 
     Examples
     --------
-    >>> check_conditioning(Track.paper())            # 45 m/s, 60 kg/m: fine
-    >>> check_conditioning(Track.paper(speed=1e-12))
+    >>> check_conditioning(Passage.paper())            # 45 m/s, 60 kg/m: fine
+    >>> check_conditioning(Passage.paper(speed=1e-12))
     Traceback (most recent call last):
     ...
     ValueError: eq. (3) loses accuracy for this track: ...
     """
-    estimate = roundoff_estimate(track)
+    estimate = roundoff_estimate(passage)
     if estimate <= ROUNDOFF_LIMIT:
         return
-    scale = np.finfo(float).eps / ROUNDOFF_LIMIT * 2.0 * np.pi / track.wagon_length
-    slowest = scale * np.sqrt(track.rail_bending_stiffness / track.rail_linear_mass)
-    lightest = track.rail_bending_stiffness * (scale / track.speed) ** 2
+    scale = np.finfo(float).eps / ROUNDOFF_LIMIT * 2.0 * np.pi / passage.wagon_length
+    slowest = scale * np.sqrt(passage.rail_bending_stiffness / passage.rail_linear_mass)
+    lightest = passage.rail_bending_stiffness * (scale / passage.speed) ** 2
     raise ValueError(
         f"eq. (3) loses accuracy for this track: its estimated round-off is {estimate:.1e} "
         f"of the response (limit {ROUNDOFF_LIMIT:.0e}), because the train is nearly still or "

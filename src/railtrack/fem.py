@@ -31,7 +31,7 @@ import numpy as np
 import scipy.sparse as sp
 from numpy.typing import ArrayLike
 
-from .track import Track
+from .passage import Passage
 
 __all__ = [
     "RingMesh",
@@ -47,7 +47,7 @@ RING_TOLERANCE = 1e-9
 """Largest |H/L - round(H/L)| accepted as an integer number of sleepers."""
 
 
-def sleepers_on_ring(track: Track) -> int:
+def sleepers_on_ring(passage: Passage) -> int:
     """Number of sleepers H / L on a ring one wagon long.
 
     Raises
@@ -56,13 +56,13 @@ def sleepers_on_ring(track: Track) -> int:
         If H / L is not an integer within `RING_TOLERANCE`: a ring of length H
         would then not be periodic in the sleepers.
     """
-    ratio = float(track.wagon_length) / float(track.sleeper_spacing)
+    ratio = float(passage.wagon_length) / float(passage.sleeper_spacing)
     count = int(round(ratio))
     if count < 1 or abs(ratio - count) > RING_TOLERANCE:
         raise ValueError(
             "the time-domain ring model needs H/L (wagon_length / sleeper_spacing) "
-            f"to be an integer; got H/L = {ratio:.6g} (H = {float(track.wagon_length):g} m, "
-            f"L = {float(track.sleeper_spacing):g} m)"
+            f"to be an integer; got H/L = {ratio:.6g} (H = {float(passage.wagon_length):g} m, "
+            f"L = {float(passage.sleeper_spacing):g} m)"
         )
     return count
 
@@ -133,7 +133,7 @@ class RingMesh:
 
     Attributes
     ----------
-    track : Track
+    passage : Passage
     elements_per_span : int
         Rail elements between neighbouring sleepers.
     n_sleepers : int
@@ -149,7 +149,7 @@ class RingMesh:
         Deflection DOF of the rail node above sleeper i.
     """
 
-    track: Track
+    passage: Passage
     elements_per_span: int
     n_sleepers: int
     element_length: float
@@ -169,7 +169,7 @@ class RingMesh:
         return 2 * self.n_nodes + self.n_sleepers
 
 
-def ring_mesh(track: Track, elements_per_span: int) -> RingMesh:
+def ring_mesh(passage: Passage, elements_per_span: int) -> RingMesh:
     """Assemble M, C, K of the ring of length H (see the module docstring).
 
     Raises
@@ -177,12 +177,12 @@ def ring_mesh(track: Track, elements_per_span: int) -> RingMesh:
     ValueError
         If H / L is not an integer (`sleepers_on_ring`).
     """
-    n_sleepers = sleepers_on_ring(track)
+    n_sleepers = sleepers_on_ring(passage)
     n_nodes = n_sleepers * elements_per_span
     n_dofs = 2 * n_nodes + n_sleepers
-    h = float(track.sleeper_spacing) / elements_per_span
+    h = float(passage.sleeper_spacing) / elements_per_span
     k_element, m_element = beam_element_matrices(
-        float(track.rail_bending_stiffness), float(track.rail_linear_mass), h
+        float(passage.rail_bending_stiffness), float(passage.rail_linear_mass), h
     )
 
     # Element e joins node e to node e + 1, and the last element closes the
@@ -203,41 +203,41 @@ def ring_mesh(track: Track, elements_per_span: int) -> RingMesh:
     pad_sign = np.repeat([1.0, 1.0, -1.0, -1.0], n_sleepers)
     pad = sp.coo_matrix((pad_sign, (pad_rows, pad_cols)), shape)
     sleepers = sp.coo_matrix(
-        (np.full(n_sleepers, float(track.sleeper_mass)), (sleeper_dofs, sleeper_dofs)), shape
+        (np.full(n_sleepers, float(passage.sleeper_mass)), (sleeper_dofs, sleeper_dofs)), shape
     )
     return RingMesh(
-        track=track,
+        passage=passage,
         elements_per_span=elements_per_span,
         n_sleepers=n_sleepers,
         element_length=h,
         mass=(m_rail + sleepers).tocsc(),
-        damping=(float(track.pad_damping) * pad).tocsc(),
-        stiffness=(k_rail + float(track.pad_stiffness) * pad).tocsc(),
+        damping=(float(passage.pad_damping) * pad).tocsc(),
+        stiffness=(k_rail + float(passage.pad_stiffness) * pad).tocsc(),
         sleeper_dofs=sleeper_dofs,
         rail_dofs=rail_dofs,
     )
 
 
-def wheel_positions(track: Track, times: ArrayLike) -> np.ndarray:
-    """Positions of the two wheels of a wagon on the ring, in [0, H) [m], eq. (9).
+def wheel_positions(passage: Passage, times: ArrayLike) -> np.ndarray:
+    """Positions of the axles of a wagon on the ring, in [0, H) [m], eq. (9).
 
-    The front wheel is at x = v t and the back wheel D behind it, modulo H;
-    every other wagon's wheels fall on the same ring positions.
+    The first axle is at x = v t and axle j at d_j behind it, modulo H;
+    every other wagon's axles fall on the same ring positions.
 
     Returns
     -------
-    ndarray, shape (len(times), 2)
+    ndarray, shape (len(times), J)
     """
     times = np.atleast_1d(np.asarray(times, dtype=float))
-    front = float(track.speed) * times
-    offsets = np.array([0.0, float(track.wheel_spacing)])
-    return np.mod(front[:, None] - offsets[None, :], float(track.wagon_length))
+    front = float(passage.speed) * times
+    offsets = np.asarray(passage.axle_positions, dtype=float)
+    return np.mod(front[:, None] - offsets[None, :], float(passage.wagon_length))
 
 
 def wheel_load_entries(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """Consistent nodal loads of the wheels at each time, as sparse entries.
 
-    Each wheel pushes down with -Q; its work-equivalent nodal loads are -Q
+    Wheel j pushes down with -Q_j; its work-equivalent nodal loads are -Q_j
     times the Hermite shape functions at its position in its element.
 
     Parameters
@@ -248,18 +248,19 @@ def wheel_load_entries(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np
 
     Returns
     -------
-    dofs : ndarray of int, shape (n_t, 8)
-        Rail DOFs loaded at each time (4 per wheel; may repeat if both wheels
+    dofs : ndarray of int, shape (n_t, 4 J)
+        Rail DOFs loaded at each time (4 per wheel; may repeat if two wheels
         stand on the same element, so accumulate with ``np.add.at``).
-    values : ndarray, shape (n_t, 8)
+    values : ndarray, shape (n_t, 4 J)
         Nodal forces [N] and moments [N m].
     """
-    x = wheel_positions(mesh.track, times)
+    x = wheel_positions(mesh.passage, times)
     h = mesh.element_length
     element = np.minimum(np.floor(x / h).astype(int), mesh.n_nodes - 1)
     xi = np.clip(x / h - element, 0.0, 1.0)
     following = (element + 1) % mesh.n_nodes
     dofs = np.stack([2 * element, 2 * element + 1, 2 * following, 2 * following + 1], axis=-1)
-    values = -float(mesh.track.wheel_load) * hermite_shape_functions(xi, h)
+    loads = np.asarray(mesh.passage.axle_loads, dtype=float)
+    values = -loads[None, :, None] * hermite_shape_functions(xi, h)
     n_t = x.shape[0]
     return dofs.reshape(n_t, -1), values.reshape(n_t, -1)

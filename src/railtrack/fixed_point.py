@@ -87,7 +87,7 @@ def contraction_factors(
         stiffness, damping = (float(np.mean(np.broadcast_to(x, w.shape))) for x in tangent)
     omega = system.omega
     foundation = (stiffness + 1j * omega * damping) / system.sleeper_mass
-    pad = system.track.pad_natural_frequency_squared + 1j * system.track.pad_damping_rate * omega
+    pad = system.passage.pad_natural_frequency_squared + 1j * system.passage.pad_damping_rate * omega
     rail = omega**2 + system.coupling
     low = np.abs(rail - foundation) / np.abs(pad)
     with np.errstate(divide="ignore"):
@@ -135,7 +135,7 @@ def iterate_fixed_point(
     m = system.harmonics
     low = np.arange(m + 1) <= split
     omega = system.omega
-    pad = system.track.pad_natural_frequency_squared + 1j * system.track.pad_damping_rate * omega
+    pad = system.passage.pad_natural_frequency_squared + 1j * system.passage.pad_damping_rate * omega
     rail = omega**2 + system.coupling
     load = system.load
     c = np.zeros(m + 1, dtype=complex) if initial is None else np.array(initial, dtype=complex)

@@ -78,6 +78,19 @@ class LinearFoundation:
         """k2 = 20 MN/m, eta2 = 0.2 MN s/m (Section 4.1)."""
         return cls(PAPER_STIFFNESS, PAPER_DAMPING)
 
+    @classmethod
+    def ballasted(cls) -> "LinearFoundation":
+        """Ballast and subgrade of Zhai, Wang & Lin (2004) in series: 49.6 MN/m, 20.4 kN s/m.
+
+        The single-layer equivalent of `railtrack.ballast.single_layer`; for
+        `railtrack.Track.ballasted()`.
+        """
+        from .ballast import ZHAI_2004 as z, single_layer
+
+        layer = single_layer(z["ballast_mass"], z["ballast_stiffness"], z["ballast_damping"],
+                             z["subgrade_stiffness"], z["subgrade_damping"])
+        return cls(layer.stiffness, layer.damping)
+
     def force(self, w, v):
         return self.stiffness * np.asarray(w) + self.damping * np.asarray(v)
 

@@ -25,8 +25,8 @@ import numpy as np
 
 from .foundations import Foundation, as_foundation
 from .sleeper import coupling_and_transfer, sleeper_operator
-from .track import Track
-from .train import load_coefficients
+from .passage import Passage
+from .load import load_coefficients
 
 __all__ = [
     "NonFiniteForceError",
@@ -80,7 +80,7 @@ class HarmonicSystem:
 
     Attributes
     ----------
-    track : Track
+    passage : Passage
     foundation : Foundation
     harmonics : int
         m, the highest harmonic kept (eq. 19).
@@ -96,7 +96,7 @@ class HarmonicSystem:
         omega_0^2 + i beta omega_n - omega_n^2 - P_n [1/s^2].
     """
 
-    track: Track
+    passage: Passage
     foundation: Foundation
     harmonics: int
     samples: int
@@ -107,12 +107,12 @@ class HarmonicSystem:
 
     @property
     def sleeper_mass(self) -> float:
-        return self.track.sleeper_mass
+        return self.passage.sleeper_mass
 
     @property
     def fundamental(self) -> float:
         """omega_1 = 2 pi v / H [rad/s]."""
-        return self.track.fundamental_frequency
+        return self.passage.fundamental_frequency
 
     def load_norm(self) -> float:
         """Two-sided norm of F_n, the scale of the residual [m/s^2]."""
@@ -120,13 +120,13 @@ class HarmonicSystem:
 
 
 def harmonic_system(
-    track: Track, foundation, harmonics: int, samples: int | None = None
+    passage: Passage, foundation, harmonics: int, samples: int | None = None
 ) -> HarmonicSystem:
     """Precompute the coefficients of eq. (17) for n = 0..m.
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
         Scalar-valued track.
     foundation : Foundation or callable
         The law f(w, w'); a callable ``f(w, v)`` is wrapped.
@@ -151,17 +151,17 @@ def harmonic_system(
         raise ValueError(
             f"samples must be an integer > 2 * harmonics = {2 * harmonics}; got {samples!r}"
         )
-    omega = track.fundamental_frequency * np.arange(harmonics + 1)
-    coupling, transfer = coupling_and_transfer(track, omega)
+    omega = passage.fundamental_frequency * np.arange(harmonics + 1)
+    coupling, transfer = coupling_and_transfer(passage, omega)
     return HarmonicSystem(
-        track=track,
+        passage=passage,
         foundation=as_foundation(foundation),
         harmonics=harmonics,
         samples=int(samples),
         omega=omega,
         coupling=coupling,
-        load=load_coefficients(track, omega, transfer),
-        operator=sleeper_operator(track, omega) - coupling,
+        load=load_coefficients(passage, omega, transfer),
+        operator=sleeper_operator(passage, omega) - coupling,
     )
 
 

@@ -17,20 +17,22 @@ from numpy.typing import ArrayLike
 
 from .foundations import LinearFoundation
 from .sleeper import coupling_and_transfer, sleeper_operator
+from .passage import Passage
 from .track import Track
-from .train import load_coefficients
+from .train import Train
+from .load import load_coefficients
 
 __all__ = ["analytic_coefficients", "sweep_speeds", "sweep_extremes"]
 
 
 def analytic_coefficients(
-    track: Track, foundation: LinearFoundation, harmonics: int
+    passage: Passage, foundation: LinearFoundation, harmonics: int
 ) -> np.ndarray:
     """Sleeper coefficients c_n, n = -m..m, of eq. (23) [m].
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
         Scalar or batched (fields of shape ``(..., 1)``).
     foundation : LinearFoundation
         The law of eq. (22).
@@ -44,8 +46,8 @@ def analytic_coefficients(
 
     Examples
     --------
-    >>> from railtrack import Track, LinearFoundation
-    >>> c = analytic_coefficients(Track.paper(), LinearFoundation.paper(), 15)
+    >>> from railtrack import LinearFoundation, Passage
+    >>> c = analytic_coefficients(Passage.paper(), LinearFoundation.paper(), 15)
     >>> float(c[15].real)          # the mean, -2 Q L / (H k2)
     -0.00025
     """
@@ -56,22 +58,24 @@ def analytic_coefficients(
         )
     if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) or harmonics < 1:
         raise ValueError(f"harmonics must be an integer >= 1; got {harmonics!r}")
-    omega = track.harmonic_frequencies(int(harmonics))
-    law = (foundation.stiffness + 1j * foundation.damping * omega) / track.sleeper_mass
-    coupling, transfer = coupling_and_transfer(track, omega)
-    denominator = coupling - sleeper_operator(track, omega) - law
-    return load_coefficients(track, omega, transfer) / denominator
+    omega = passage.harmonic_frequencies(int(harmonics))
+    law = (foundation.stiffness + 1j * foundation.damping * omega) / passage.sleeper_mass
+    coupling, transfer = coupling_and_transfer(passage, omega)
+    denominator = coupling - sleeper_operator(passage, omega) - law
+    return load_coefficients(passage, omega, transfer) / denominator
 
 
 def sweep_speeds(
-    track: Track, foundation: LinearFoundation, speeds: ArrayLike, harmonics: int = 15
+    track: Track, train: Train, foundation: LinearFoundation, speeds: ArrayLike,
+    harmonics: int = 15,
 ) -> np.ndarray:
     """Eq. (23) for many train speeds at once.
 
     Parameters
     ----------
     track : Track
-        The track; its own speed is ignored.
+    train : Train
+        Its own speed is ignored.
     foundation : LinearFoundation
     speeds : array_like, shape (S,)
         Train speeds [m/s], all > 0.
@@ -83,11 +87,11 @@ def sweep_speeds(
         c_n for each speed [m].  The period T = H / v differs between rows.
     """
     speeds = np.asarray(speeds, dtype=float).reshape(-1, 1)
-    return analytic_coefficients(track.replace(speed=speeds), foundation, harmonics)
+    return analytic_coefficients(Passage(track, train.replace(speed=speeds)), foundation, harmonics)
 
 
 def sweep_extremes(
-    track: Track, foundation: LinearFoundation, speeds: ArrayLike, harmonics: int = 60,
+    track: Track, train: Train, foundation: LinearFoundation, speeds: ArrayLike, harmonics: int = 60,
     samples: int = 2048,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Lowest and highest sleeper displacement over a period, for many speeds (eq. 23).
@@ -99,7 +103,8 @@ def sweep_extremes(
     Parameters
     ----------
     track : Track
-        The track; its own speed is ignored.
+    train : Train
+        Its own speed is ignored.
     foundation : LinearFoundation
     speeds : array_like, shape (S,)
         Train speeds [m/s].
@@ -116,12 +121,12 @@ def sweep_extremes(
 
     Examples
     --------
-    >>> from railtrack import Track, LinearFoundation
-    >>> low, high = sweep_extremes(Track.paper(), LinearFoundation.paper(), [45.0])
+    >>> from railtrack import Track, Train, LinearFoundation
+    >>> low, high = sweep_extremes(Track.paper(), Train.paper(), LinearFoundation.paper(), [45.0])
     >>> round(float(low[0]) * 1e3, 2)
     -1.13
     """
-    coefficients = sweep_speeds(track, foundation, speeds, harmonics)[:, harmonics:]
+    coefficients = sweep_speeds(track, train, foundation, speeds, harmonics)[:, harmonics:]
     spectrum = np.zeros((coefficients.shape[0], samples // 2 + 1), dtype=complex)
     spectrum[:, : harmonics + 1] = coefficients * samples
     w = np.fft.irfft(spectrum, samples, axis=-1)

@@ -40,7 +40,7 @@ def linear_guess(system: HarmonicSystem) -> np.ndarray:
     such as a pure cubic: there -F_0 / (k/M) is astronomically large.
     Harmonics whose linearised denominator vanishes start at zero.
     """
-    force = float(system.track.static_load_per_sleeper)
+    force = float(system.passage.static_load_per_sleeper)
     mean = static_deflection(system.foundation, force)
     if np.isfinite(mean):
         stiffness, damping = (

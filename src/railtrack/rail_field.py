@@ -37,8 +37,8 @@ from numpy.typing import ArrayLike
 
 from .receptance import _sech, _sinc, _tanhc, bending_wavenumber, receptance_factors
 from .sleeper import pad_stiffness, rail_coefficients
-from .track import Track
-from .train import load_coefficients
+from .passage import Passage
+from .load import axle_factor, load_coefficients
 
 __all__ = [
     "offset_receptance",
@@ -59,20 +59,20 @@ def _expm1c(y):
     return np.where(y == 0, 1.0, np.expm1(safe) / safe)
 
 
-def _split(track: Track, x: ArrayLike):
+def _split(passage: Passage, x: ArrayLike):
     """x = k L + xi L with integer k and 0 <= xi < 1."""
     x = np.asarray(x, dtype=float)
-    k = np.floor(x / track.sleeper_spacing)
-    return k, np.clip(x / track.sleeper_spacing - k, 0.0, 1.0)
+    k = np.floor(x / passage.sleeper_spacing)
+    return k, np.clip(x / passage.sleeper_spacing - k, 0.0, 1.0)
 
 
-def _parts(track: Track, omega: np.ndarray, xi: np.ndarray):
+def _parts(passage: Passage, omega: np.ndarray, xi: np.ndarray):
     """a, q (signed), q^4 - a^4, gap, U and V for S = (U - V)/denominator, shape (X, W)."""
-    span = track.sleeper_spacing
-    a = bending_wavenumber(track, omega) * span
-    q = omega * span / track.speed
+    span = passage.sleeper_spacing
+    a = bending_wavenumber(passage, omega) * span
+    q = omega * span / passage.speed
     r = np.sqrt(np.abs(omega)) * (
-        track.rail_bending_stiffness / track.rail_linear_mass) ** 0.25 / track.speed
+        passage.rail_bending_stiffness / passage.rail_linear_mass) ** 0.25 / passage.speed
     aq = np.abs(q)
     cos_gap = 0.5 * _sinc(0.5 * (a + aq)) * _sinc(0.5 * (a - aq))
     cosh_gap = (0.5 * _tanhc(0.5 * a) * _tanhc(a)
@@ -95,13 +95,13 @@ def _parts(track: Track, omega: np.ndarray, xi: np.ndarray):
     return a, q, q**4 - a**4, cos_gap * cosh_gap, u, v
 
 
-def offset_receptance(track: Track, omega: ArrayLike, x: ArrayLike,
+def offset_receptance(passage: Passage, omega: ArrayLike, x: ArrayLike,
                       derivative: int = 0) -> np.ndarray:
     """S(x, omega), the closed form of the offset lattice sum, or d^2 S/dx^2 [m/N], [1/(N m)].
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     omega : array_like, shape (W,)
         Angular frequency [rad/s].
     x : array_like, shape (X,)
@@ -118,25 +118,25 @@ def offset_receptance(track: Track, omega: ArrayLike, x: ArrayLike,
     --------
     >>> import numpy as np
     >>> from railtrack.receptance import rail_receptance
-    >>> track = Track.paper()
+    >>> passage = Passage.paper()
     >>> omega = np.array([50.0, 500.0])
-    >>> bool(np.allclose(offset_receptance(track, omega, [0.0])[0],
-    ...                  rail_receptance(track, omega), rtol=1e-12))
+    >>> bool(np.allclose(offset_receptance(passage, omega, [0.0])[0],
+    ...                  rail_receptance(passage, omega), rtol=1e-12))
     True
-    >>> bool(np.allclose(offset_receptance(track, omega, [0.2, 0.9]),
-    ...                  offset_receptance_lattice_sum(track, omega, [0.2, 0.9]), rtol=1e-8))
+    >>> bool(np.allclose(offset_receptance(passage, omega, [0.2, 0.9]),
+    ...                  offset_receptance_lattice_sum(passage, omega, [0.2, 0.9]), rtol=1e-8))
     True
     """
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
-    k, xi = _split(track, np.atleast_1d(x))
-    a, q, _, _, u, v = _parts(track, omega, xi)
-    top = u - v if derivative == 0 else -(a**2) * (u + v) / track.sleeper_spacing**2
+    k, xi = _split(passage, np.atleast_1d(x))
+    a, q, _, _, u, v = _parts(passage, omega, xi)
+    top = u - v if derivative == 0 else -(a**2) * (u + v) / passage.sleeper_spacing**2
     with np.errstate(divide="ignore", invalid="ignore"):
-        value = top / receptance_factors(track, omega).denominator
+        value = top / receptance_factors(passage, omega).denominator
     return value * np.exp(-1j * q * k[:, None])
 
 
-def offset_receptance_lattice_sum(track: Track, omega: ArrayLike, x: ArrayLike,
+def offset_receptance_lattice_sum(passage: Passage, omega: ArrayLike, x: ArrayLike,
                                   derivative: int = 0, terms: int = 20_000) -> np.ndarray:
     """S(x, omega) or its curvature by the brute-force Poisson sum over kappa_j (a check).
 
@@ -147,13 +147,13 @@ def offset_receptance_lattice_sum(track: Track, omega: ArrayLike, x: ArrayLike,
     """
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
     x = np.atleast_1d(np.asarray(x, dtype=float))
-    kappa = omega[:, None] / track.speed + 2.0 * np.pi * np.arange(-terms, terms + 1) / track.sleeper_spacing
-    kb4 = (bending_wavenumber(track, omega) ** 4)[:, None]
+    kappa = omega[:, None] / passage.speed + 2.0 * np.pi * np.arange(-terms, terms + 1) / passage.sleeper_spacing
+    kb4 = (bending_wavenumber(passage, omega) ** 4)[:, None]
     weight = (-(kappa**2)) ** (derivative // 2) / (kappa**4 - kb4)
     out = np.empty((x.size, omega.size), dtype=complex)
     for i, xx in enumerate(x):
         out[i] = np.sum(weight * np.exp(-1j * kappa * xx), axis=-1)
-    return out / (track.rail_bending_stiffness * track.sleeper_spacing)
+    return out / (passage.rail_bending_stiffness * passage.sleeper_spacing)
 
 
 def _bernoulli_sum(p: int, xi: np.ndarray) -> np.ndarray:
@@ -188,7 +188,7 @@ def _lattice_kernels(q: np.ndarray, a: np.ndarray, xi: np.ndarray):
     return f_wave - f_all, q**2 * f_all - g_wave
 
 
-def difference_kernels(track: Track, omega: ArrayLike, xi: ArrayLike):
+def difference_kernels(passage: Passage, omega: ArrayLike, xi: ArrayLike):
     """Lambda and Lambda_2, the finite kernels of the rail between sleepers [-].
 
     With the denominator ``4 EI gap (q^4 - a^4) / L^3`` of eq. (3)
@@ -209,8 +209,8 @@ def difference_kernels(track: Track, omega: ArrayLike, xi: ArrayLike):
     """
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
     xi = np.atleast_1d(np.asarray(xi, dtype=float))
-    a, q, quartic, gap, u, v = _parts(track, omega, xi)
-    _, _, _, _, u0, v0 = _parts(track, omega, np.zeros(1))
+    a, q, quartic, gap, u, v = _parts(passage, omega, xi)
+    _, _, _, _, u0, v0 = _parts(passage, omega, np.zeros(1))
     shift = np.exp(-1j * q * xi[:, None])
     near = np.abs(quartic) < _SWITCH
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -223,19 +223,18 @@ def difference_kernels(track: Track, omega: ArrayLike, xi: ArrayLike):
     return lam, lam2
 
 
-def _reaction_factor(track: Track, omega: np.ndarray, sleeper: np.ndarray) -> np.ndarray:
-    """G = A [c (q^4 - a^4) + Q (1 + e^{-i omega D/v}) L^4 / (H EI)] / (denominator + A numerator)."""
-    span, ei = track.sleeper_spacing, track.rail_bending_stiffness
-    factors = receptance_factors(track, omega)
-    stiffness = pad_stiffness(track, omega)
-    quartic = (omega * span / track.speed) ** 4 - (bending_wavenumber(track, omega) * span) ** 4
-    wheels = 1.0 + np.exp(-1j * omega * track.wheel_spacing / track.speed)
-    load = track.wheel_load * wheels * span**4 / (track.wagon_length * ei)
+def _reaction_factor(passage: Passage, omega: np.ndarray, sleeper: np.ndarray) -> np.ndarray:
+    """G = A [c (q^4 - a^4) + (sum_j Q_j e^{-i omega d_j/v}) L^4 / (H EI)] / (denominator + A numerator)."""
+    span, ei = passage.sleeper_spacing, passage.rail_bending_stiffness
+    factors = receptance_factors(passage, omega)
+    stiffness = pad_stiffness(passage, omega)
+    quartic = (omega * span / passage.speed) ** 4 - (bending_wavenumber(passage, omega) * span) ** 4
+    load = axle_factor(passage, omega) * span**4 / (passage.wagon_length * ei)
     return stiffness * (sleeper * quartic + load) / (
         factors.denominator + stiffness * factors.numerator)
 
 
-def seat_load_coefficients(track: Track, omega: ArrayLike, sleeper: ArrayLike) -> np.ndarray:
+def seat_load_coefficients(passage: Passage, omega: ArrayLike, sleeper: ArrayLike) -> np.ndarray:
     """Fourier coefficients of the rail-seat load R = A (c_n - r_n), eq. (5) [N].
 
     R is the pad's push on the rail, upward, which is the pad's compression
@@ -243,12 +242,12 @@ def seat_load_coefficients(track: Track, omega: ArrayLike, sleeper: ArrayLike) -
     `_reaction_factor`), finite at the poles of eq. (3); R_0 = 2 Q L / H.
     """
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
-    gap = receptance_factors(track, omega).gap
-    return (4.0 * track.rail_bending_stiffness * gap / track.sleeper_spacing**3
-            * _reaction_factor(track, omega, np.asarray(sleeper)))
+    gap = receptance_factors(passage, omega).gap
+    return (4.0 * passage.rail_bending_stiffness * gap / passage.sleeper_spacing**3
+            * _reaction_factor(passage, omega, np.asarray(sleeper)))
 
 
-def rail_field_coefficients(track: Track, omega: ArrayLike, sleeper: ArrayLike,
+def rail_field_coefficients(passage: Passage, omega: ArrayLike, sleeper: ArrayLike,
                             x: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """Fourier coefficients of the rail's displacement and curvature at x [m], [1/m].
 
@@ -259,7 +258,7 @@ def rail_field_coefficients(track: Track, omega: ArrayLike, sleeper: ArrayLike,
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     omega : array_like, shape (W,)
         Harmonic frequencies omega_n [rad/s].
     sleeper : array_like, shape (W,)
@@ -274,18 +273,18 @@ def rail_field_coefficients(track: Track, omega: ArrayLike, sleeper: ArrayLike,
     """
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
     sleeper = np.asarray(sleeper)
-    k, xi = _split(track, np.atleast_1d(x))
-    q = omega * track.sleeper_spacing / track.speed
-    above = rail_coefficients(track, omega, sleeper, load_coefficients(track, omega))
+    k, xi = _split(passage, np.atleast_1d(x))
+    q = omega * passage.sleeper_spacing / passage.speed
+    above = rail_coefficients(passage, omega, sleeper, load_coefficients(passage, omega))
     # Positions a whole number of spans apart share their kernels: evaluate
     # each offset within the span once (to 1e-12 of a span).
-    rounded = np.round(xi / track.sleeper_spacing, 12)
+    rounded = np.round(xi / passage.sleeper_spacing, 12)
     _, first, inverse = np.unique(rounded, return_index=True, return_inverse=True)
-    lam, lam2 = (kernel[inverse.ravel()] for kernel in difference_kernels(track, omega, xi[first]))
-    factor = _reaction_factor(track, omega, sleeper)
+    lam, lam2 = (kernel[inverse.ravel()] for kernel in difference_kernels(passage, omega, xi[first]))
+    factor = _reaction_factor(passage, omega, sleeper)
     shift = np.exp(-1j * q * xi[:, None])
     bloch = np.exp(-1j * q * k[:, None])
     displacement = shift * above + factor * lam
-    curvature = -((q / track.sleeper_spacing) ** 2) * shift * above + (
-        factor * lam2 / track.sleeper_spacing**2)
+    curvature = -((q / passage.sleeper_spacing) ** 2) * shift * above + (
+        factor * lam2 / passage.sleeper_spacing**2)
     return bloch * displacement, bloch * curvature

@@ -25,7 +25,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .track import Track
+from .passage import Passage
 
 __all__ = [
     "bending_wavenumber",
@@ -56,12 +56,12 @@ def _sech(x: np.ndarray) -> np.ndarray:
     return 2.0 * e / (1.0 + e * e)
 
 
-def bending_wavenumber(track: Track, omega: ArrayLike) -> np.ndarray:
+def bending_wavenumber(passage: Passage, omega: ArrayLike) -> np.ndarray:
     """Free bending wavenumber k_b = (rho S omega^2 / EI)^(1/4) of eq. (3) [1/m].
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     omega : array_like
         Angular frequency [rad/s], any sign.
 
@@ -71,7 +71,7 @@ def bending_wavenumber(track: Track, omega: ArrayLike) -> np.ndarray:
         k_b >= 0, same shape as `omega` (broadcast with the track's fields).
     """
     omega = np.asarray(omega, dtype=float)
-    ratio = track.rail_linear_mass / track.rail_bending_stiffness
+    ratio = passage.rail_linear_mass / passage.rail_bending_stiffness
     return np.sqrt(np.abs(omega)) * ratio**0.25
 
 
@@ -87,7 +87,7 @@ class ReceptanceFactors(NamedTuple):
     gap: np.ndarray
 
 
-def receptance_factors(track: Track, omega: ArrayLike) -> ReceptanceFactors:
+def receptance_factors(passage: Passage, omega: ArrayLike) -> ReceptanceFactors:
     """Split eta_E of eq. (3) into finite, well-conditioned factors.
 
     With ``a = k_b L``, ``q = |omega| L / v`` and ``r = q / a`` (which is
@@ -105,7 +105,7 @@ def receptance_factors(track: Track, omega: ArrayLike) -> ReceptanceFactors:
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     omega : array_like
         Angular frequency [rad/s].
 
@@ -115,13 +115,13 @@ def receptance_factors(track: Track, omega: ArrayLike) -> ReceptanceFactors:
         ``numerator`` [-], ``denominator`` [N/m], ``gap`` [-].
     """
     omega = np.asarray(omega, dtype=float)
-    span = track.sleeper_spacing
-    a = bending_wavenumber(track, omega) * span
-    q = np.abs(omega) * span / track.speed
+    span = passage.sleeper_spacing
+    a = bending_wavenumber(passage, omega) * span
+    q = np.abs(omega) * span / passage.speed
     r = (
         np.sqrt(np.abs(omega))
-        * (track.rail_bending_stiffness / track.rail_linear_mass) ** 0.25
-        / track.speed
+        * (passage.rail_bending_stiffness / passage.rail_linear_mass) ** 0.25
+        / passage.speed
     )
     sech_a = _sech(a)
     # (cos a - cos q) / (q^2 - a^2), from cos a - cos q = -2 sin((a+q)/2) sin((a-q)/2)
@@ -134,12 +134,12 @@ def receptance_factors(track: Track, omega: ArrayLike) -> ReceptanceFactors:
     gap = cos_gap * cosh_gap
     numerator = _sinc(a) * cosh_gap * (1.0 + r**2) + _tanhc(a) * cos_gap * (1.0 - r**2)
     denominator = (
-        4.0 * track.rail_bending_stiffness / span**3 * gap * a**4 * (r**4 - 1.0)
+        4.0 * passage.rail_bending_stiffness / span**3 * gap * a**4 * (r**4 - 1.0)
     )
     return ReceptanceFactors(numerator, denominator, gap)
 
 
-def rail_receptance(track: Track, omega: ArrayLike) -> np.ndarray:
+def rail_receptance(passage: Passage, omega: ArrayLike) -> np.ndarray:
     """Receptance eta_E(omega) of the periodically supported rail, eq. (3) [m/N].
 
     The displacement of the rail above a sleeper per unit reaction of the
@@ -148,7 +148,7 @@ def rail_receptance(track: Track, omega: ArrayLike) -> np.ndarray:
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     omega : array_like
         Angular frequency [rad/s].
 
@@ -162,19 +162,19 @@ def rail_receptance(track: Track, omega: ArrayLike) -> np.ndarray:
     Examples
     --------
     >>> import numpy as np
-    >>> track = Track.paper()
+    >>> passage = Passage.paper()
     >>> omega = np.array([50.0, 500.0])
-    >>> np.allclose(rail_receptance(track, omega),
-    ...             rail_receptance_lattice_sum(track, omega), rtol=1e-8)
+    >>> np.allclose(rail_receptance(passage, omega),
+    ...             rail_receptance_lattice_sum(passage, omega), rtol=1e-8)
     True
     """
-    factors = receptance_factors(track, omega)
+    factors = receptance_factors(passage, omega)
     with np.errstate(divide="ignore"):
         return factors.numerator / factors.denominator
 
 
 def rail_receptance_lattice_sum(
-    track: Track, omega: ArrayLike, terms: int = 20_000
+    passage: Passage, omega: ArrayLike, terms: int = 20_000
 ) -> np.ndarray:
     """eta_E by Poisson summation of the free beam's Green function (check of eq. 3).
 
@@ -190,7 +190,7 @@ def rail_receptance_lattice_sum(
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
         Scalar-valued track.
     omega : array_like
         Angular frequency [rad/s].
@@ -203,36 +203,36 @@ def rail_receptance_lattice_sum(
         eta_E [m/N].
     """
     omega = np.asarray(omega, dtype=float)
-    span = track.sleeper_spacing
-    q = (omega * span / track.speed)[..., None]
-    a4 = ((bending_wavenumber(track, omega) * span) ** 4)[..., None]
+    span = passage.sleeper_spacing
+    q = (omega * span / passage.speed)[..., None]
+    a4 = ((bending_wavenumber(passage, omega) * span) ** 4)[..., None]
     j = np.arange(-terms, terms + 1)
     total = np.sum(1.0 / ((q + 2.0 * np.pi * j) ** 4 - a4), axis=-1)
     # sum over |j| > J of 1/(2 pi j)^4 ~ 2 / (3 J^3 (2 pi)^4)
     tail = 2.0 / (3.0 * terms**3 * (2.0 * np.pi) ** 4)
-    return (total + tail) * span**3 / track.rail_bending_stiffness
+    return (total + tail) * span**3 / passage.rail_bending_stiffness
 
 
-def moving_load_receptance(track: Track, omega: ArrayLike) -> np.ndarray:
+def moving_load_receptance(passage: Passage, omega: ArrayLike) -> np.ndarray:
     """1 / (v EI [(omega/v)^4 - k_b^4]), the moving-load factor of eq. (3) [m s/N].
 
     Multiplied by ``-Q exp(-i omega D_j / v)`` it is the displacement of the
     free rail at x = 0 under the moving load j.  Infinite where omega/v = k_b.
     """
     omega = np.asarray(omega, dtype=float)
-    kb = bending_wavenumber(track, omega)
+    kb = bending_wavenumber(passage, omega)
     with np.errstate(divide="ignore"):
         return 1.0 / (
-            track.speed * track.rail_bending_stiffness * ((omega / track.speed) ** 4 - kb**4)
+            passage.speed * passage.rail_bending_stiffness * ((omega / passage.speed) ** 4 - kb**4)
         )
 
 
-def critical_frequency(track: Track) -> float:
+def critical_frequency(passage: Passage) -> float:
     """omega* = v^2 sqrt(rho S / EI), where omega / v equals k_b [rad/s]."""
-    return float(track.speed**2 * np.sqrt(track.rail_linear_mass / track.rail_bending_stiffness))
+    return float(passage.speed**2 * np.sqrt(passage.rail_linear_mass / passage.rail_bending_stiffness))
 
 
-def receptance_pole_frequencies(track: Track, omega_max: float) -> np.ndarray:
+def receptance_pole_frequencies(passage: Passage, omega_max: float) -> np.ndarray:
     """Frequencies 0 < omega <= omega_max where cos(k_b L) = cos(omega L / v) [rad/s].
 
     There eta_E of eq. (3) is infinite: a free bending wave of the rail
@@ -247,9 +247,9 @@ def receptance_pole_frequencies(track: Track, omega_max: float) -> np.ndarray:
     ndarray
         Sorted pole frequencies (omega = 0 itself is not listed).
     """
-    c = (track.rail_linear_mass / track.rail_bending_stiffness) ** 0.25
-    v, span = track.speed, track.sleeper_spacing
-    poles = [critical_frequency(track)]
+    c = (passage.rail_linear_mass / passage.rail_bending_stiffness) ** 0.25
+    v, span = passage.speed, passage.sleeper_spacing
+    poles = [critical_frequency(passage)]
     m = 1
     while True:
         root = np.sqrt(c * c + 8.0 * np.pi * m / (v * span))

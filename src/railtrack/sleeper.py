@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .receptance import receptance_factors
-from .track import Track
+from .passage import Passage
 
 __all__ = [
     "pad_stiffness",
@@ -31,16 +31,16 @@ __all__ = [
 ]
 
 
-def pad_stiffness(track: Track, omega: ArrayLike) -> np.ndarray:
+def pad_stiffness(passage: Passage, omega: ArrayLike) -> np.ndarray:
     """Dynamic stiffness of the rail pad, A(omega) = k1 + i omega eta1 (after eq. 5) [N/m]."""
     omega = np.asarray(omega, dtype=float)
-    return track.pad_stiffness + 1j * omega * track.pad_damping
+    return passage.pad_stiffness + 1j * omega * passage.pad_damping
 
 
-def _pad_rail_denominator(track: Track, omega: np.ndarray):
+def _pad_rail_denominator(passage: Passage, omega: np.ndarray):
     """Factors of eq. (3) and the finite form of 1 + A eta_E (times eta_E's denominator)."""
-    factors = receptance_factors(track, omega)
-    stiffness = pad_stiffness(track, omega)
+    factors = receptance_factors(passage, omega)
+    stiffness = pad_stiffness(passage, omega)
     combined = factors.denominator + stiffness * factors.numerator
     if not np.all(np.isfinite(combined)) or np.any(combined == 0):
         raise ValueError(
@@ -50,7 +50,7 @@ def _pad_rail_denominator(track: Track, omega: np.ndarray):
     return factors, stiffness, combined
 
 
-def load_transfer(track: Track, omega: ArrayLike) -> np.ndarray:
+def load_transfer(passage: Passage, omega: ArrayLike) -> np.ndarray:
     """Gamma(omega) = 1 / {(1 + A eta_E) [(omega/v)^4 - k_b^4]}, eq. (6) [m^4].
 
     Computed as ``4 EI L gap / (denominator + A numerator)`` from the
@@ -59,13 +59,13 @@ def load_transfer(track: Track, omega: ArrayLike) -> np.ndarray:
     brackets of the printed formula are singular.
     """
     omega = np.asarray(omega, dtype=float)
-    factors, _, combined = _pad_rail_denominator(track, omega)
+    factors, _, combined = _pad_rail_denominator(passage, omega)
     return (
-        4.0 * track.rail_bending_stiffness * track.sleeper_spacing * factors.gap / combined
+        4.0 * passage.rail_bending_stiffness * passage.sleeper_spacing * factors.gap / combined
     )
 
 
-def rail_coupling(track: Track, omega: ArrayLike) -> np.ndarray:
+def rail_coupling(passage: Passage, omega: ArrayLike) -> np.ndarray:
     """Rail–sleeper coupling P(omega) = A^2 eta_E / (M (1 + A eta_E)), eq. (16) [1/s^2].
 
     P_n = P(omega_n) is how strongly harmonic n of the sleeper's motion is fed
@@ -74,7 +74,7 @@ def rail_coupling(track: Track, omega: ArrayLike) -> np.ndarray:
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     omega : array_like
         Angular frequency [rad/s].
 
@@ -85,41 +85,41 @@ def rail_coupling(track: Track, omega: ArrayLike) -> np.ndarray:
 
     Examples
     --------
-    >>> track = Track.paper()
-    >>> float(rail_coupling(track, 0.0).real) == track.pad_stiffness / track.sleeper_mass
+    >>> passage = Passage.paper()
+    >>> float(rail_coupling(passage, 0.0).real) == passage.pad_stiffness / passage.sleeper_mass
     True
     """
     omega = np.asarray(omega, dtype=float)
-    factors, stiffness, combined = _pad_rail_denominator(track, omega)
-    return stiffness**2 * factors.numerator / (track.sleeper_mass * combined)
+    factors, stiffness, combined = _pad_rail_denominator(passage, omega)
+    return stiffness**2 * factors.numerator / (passage.sleeper_mass * combined)
 
 
-def coupling_and_transfer(track: Track, omega: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+def coupling_and_transfer(passage: Passage, omega: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """`rail_coupling` and `load_transfer` together, sharing the work of eq. (3)."""
     omega = np.asarray(omega, dtype=float)
-    factors, stiffness, combined = _pad_rail_denominator(track, omega)
-    coupling = stiffness**2 * factors.numerator / (track.sleeper_mass * combined)
+    factors, stiffness, combined = _pad_rail_denominator(passage, omega)
+    coupling = stiffness**2 * factors.numerator / (passage.sleeper_mass * combined)
     transfer = (
-        4.0 * track.rail_bending_stiffness * track.sleeper_spacing * factors.gap / combined
+        4.0 * passage.rail_bending_stiffness * passage.sleeper_spacing * factors.gap / combined
     )
     return coupling, transfer
 
 
-def sleeper_operator(track: Track, omega: ArrayLike) -> np.ndarray:
+def sleeper_operator(passage: Passage, omega: ArrayLike) -> np.ndarray:
     """omega_0^2 + i beta omega - omega^2, the sleeper's own terms in eq. (17) [1/s^2].
 
     The Fourier transform of ``w'' + beta w' + omega_0^2 w`` divided by w.
     """
     omega = np.asarray(omega, dtype=float)
     return (
-        track.pad_natural_frequency_squared
-        + 1j * track.pad_damping_rate * omega
+        passage.pad_natural_frequency_squared
+        + 1j * passage.pad_damping_rate * omega
         - omega**2
     )
 
 
 def rail_coefficients(
-    track: Track, omega: ArrayLike, sleeper: ArrayLike, load: ArrayLike
+    passage: Passage, omega: ArrayLike, sleeper: ArrayLike, load: ArrayLike
 ) -> np.ndarray:
     """Fourier coefficients of the rail displacement above the sleeper, eq. (6) [m].
 
@@ -130,7 +130,7 @@ def rail_coefficients(
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     omega : array_like
         Harmonic frequencies omega_n [rad/s].
     sleeper : array_like
@@ -144,9 +144,9 @@ def rail_coefficients(
         Complex r_n [m].
     """
     omega = np.asarray(omega, dtype=float)
-    coupling = rail_coupling(track, omega)
+    coupling = rail_coupling(passage, omega)
     return (
-        track.sleeper_mass
+        passage.sleeper_mass
         * (coupling * np.asarray(sleeper) - np.asarray(load))
-        / pad_stiffness(track, omega)
+        / pad_stiffness(passage, omega)
     )

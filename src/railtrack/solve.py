@@ -32,7 +32,9 @@ from .linear import analytic_coefficients
 from .newton import iterate_newton, linear_guess
 from .conditioning import check_conditioning
 from .solution import Solution, TruncationWarning
+from .passage import Passage
 from .track import Track
+from .train import Train
 from .truncation import (
     MAX_AUTO_HARMONICS,
     TAIL_FACTOR,
@@ -70,7 +72,7 @@ def _fixed_point(system: HarmonicSystem, tol, max_iterations, split, initial) ->
 
 
 def _analytic(system: HarmonicSystem, tol, max_iterations, split, initial) -> SolverOutcome:
-    full = analytic_coefficients(system.track, system.foundation, system.harmonics)
+    full = analytic_coefficients(system.passage, system.foundation, system.harmonics)
     c = full[system.harmonics :]
     current = residual(system, c)
     norm = residual_norm(system, current)
@@ -87,6 +89,7 @@ METHODS = {"newton": _newton, "fixed-point": _fixed_point, "analytic": _analytic
 
 def solve(
     track: Track,
+    train: Train,
     foundation,
     harmonics: int | str = "auto",
     method: str = "newton",
@@ -105,7 +108,9 @@ def solve(
     Parameters
     ----------
     track : Track
-        Track and train, e.g. ``Track.paper()``; scalar fields only.
+        Rail, pads and sleepers, e.g. ``Track.paper()``; scalar fields only.
+    train : Train
+        Wagon length, axles and speed, e.g. ``Train.paper()``; scalar speed.
     foundation : foundation object or callable
         `LinearFoundation`, `BilinearFoundation`, `CubicFoundation`, or any
         callable ``f(w, v)`` returning the foundation force [N] as an array
@@ -165,23 +170,23 @@ def solve(
 
     Examples
     --------
-    >>> from railtrack import Track, CubicFoundation, solve
-    >>> solution = solve(Track.paper(), CubicFoundation.paper(epsilon=0.8))
+    >>> from railtrack import Track, Train, CubicFoundation, solve
+    >>> solution = solve(Track.paper(), Train.paper(), CubicFoundation.paper(epsilon=0.8))
     >>> solution.converged, solution.truncation_error < 1e-3
     (True, True)
     >>> w = solution.sleeper_displacement([0.0, 0.1])    # metres, w < 0 is down
     """
     if method not in METHODS:
         raise ValueError(f"method must be one of {sorted(METHODS)}; got {method!r}")
-    if not isinstance(track, Track):
-        raise TypeError(f"track must be a railtrack.Track; got {type(track).__name__}")
-    batched = [f for f, v in vars(track).items() if np.ndim(v) > 0]
+    passage = Passage(track, train)
+    batched = [f for part in (track, train) for f, v in vars(part).items()
+               if not isinstance(v, tuple) and np.ndim(v) > 0]
     if batched:
         raise ValueError(
-            f"solve takes a track with scalar fields; {batched} are arrays "
+            f"solve takes a track and a train with scalar fields; {batched} are arrays "
             "(for a batch of linear tracks use railtrack.sweep_speeds)"
         )
-    check_conditioning(track)
+    check_conditioning(passage)
     automatic = isinstance(harmonics, str) and harmonics == "auto"
     if not automatic:
         require_count("harmonics", harmonics, 1)
@@ -204,20 +209,20 @@ def solve(
         require_count("split (N0)", split, 0)
     foundation = as_foundation(foundation)
     if check_foundation:
-        check_foundation_at_rest(foundation, float(track.pad_stiffness), float(track.pad_damping))
+        check_foundation_at_rest(foundation, float(passage.pad_stiffness), float(passage.pad_damping))
 
     if automatic:
-        target, spectrum = predict_harmonics(track, foundation, accuracy / 2)
+        target, spectrum = predict_harmonics(passage, foundation, accuracy / 2)
         coarse = method == "analytic" or target <= WARM_START_ABOVE
         m = target if coarse else max(15, target // 4)
-        system = spectrum.system(track, foundation, m, auto_samples(m))
+        system = spectrum.system(passage, foundation, m, auto_samples(m))
     else:
         m = target = int(harmonics)
         if samples is not None:
             require_jacobian_samples(samples, m)
         # one evaluation of eq. (3) serves the solve and its truncation estimate
-        spectrum = track_spectrum(track, TAIL_FACTOR * m)
-        system = spectrum.system(track, foundation, m, samples)
+        spectrum = track_spectrum(passage, TAIL_FACTOR * m)
+        system = spectrum.system(passage, foundation, m, samples)
         initial = None if initial is None else checked_initial(initial, m)
 
     iterations = 0
@@ -237,10 +242,10 @@ def solve(
             grown = min(MAX_AUTO_HARMONICS, max(
                 math.ceil(1.1 * m), grown_harmonics(outcome.coefficients, tail, 0.8 * accuracy)))
         if spectrum.upto < TAIL_FACTOR * grown:
-            spectrum = track_spectrum(track, TAIL_FACTOR * grown)
+            spectrum = track_spectrum(passage, TAIL_FACTOR * grown)
         initial = padded(outcome.coefficients, tail, grown) if method != "analytic" else None
         m = target = grown
-        system = spectrum.system(track, foundation, grown, auto_samples(grown))
+        system = spectrum.system(passage, foundation, grown, auto_samples(grown))
 
     message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
     if automatic:
@@ -248,7 +253,7 @@ def solve(
                     f"estimated truncation error {estimate:.1e})")
     if outcome.converged and np.isfinite(estimate) and estimate > (accuracy if automatic else WARN_TRUNCATION):
         if not automatic:
-            fix = f"harmonics='auto' picks m = {predict_harmonics(track, foundation, DEFAULT_ACCURACY / 2)[0]}"
+            fix = f"harmonics='auto' picks m = {predict_harmonics(passage, foundation, DEFAULT_ACCURACY / 2)[0]}"
         elif m >= MAX_AUTO_HARMONICS:
             fix = f"the largest m that 'auto' takes is {MAX_AUTO_HARMONICS}"
         else:
@@ -258,7 +263,7 @@ def solve(
             f"sleeper displacement; {fix} (pass a larger harmonics or use 'auto')"
         ), stacklevel=2)
     solution = Solution(
-        track=track,
+        passage=passage,
         foundation=foundation,
         harmonics=system.harmonics,
         coefficients=two_sided(outcome.coefficients),

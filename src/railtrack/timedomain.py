@@ -26,11 +26,14 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 from .fem import ring_mesh, sleepers_on_ring, wheel_load_entries
+from .ring_outputs import ring_outputs, watched_dofs
 from .foundations import as_foundation
 from .newmark import NewmarkStepper, NonFiniteLawError, instability_hint, reference_law, static_state
 from .runcost import LongRunWarning, check_run_cost
 from .timestep import TimeStepWarning, check_step_error, check_steps_per_period
+from .passage import Passage
 from .track import Track
+from .train import Train
 
 __all__ = [
     "TimeDomainSolution",
@@ -52,7 +55,7 @@ class TimeDomainSolution:
     Attributes
     ----------
     times : ndarray, shape (steps_per_period,)
-        One period, t = 0, dt, ..., T - dt [s]; t = 0 when a front wheel is
+        One period, t = 0, dt, ..., T - dt [s]; t = 0 when a wagon's first axle is
         above sleeper 0.
     sleeper_displacement : ndarray, shape (steps_per_period,)
         w(t) of sleeper 0 over the last period [m], positive upward.
@@ -61,6 +64,11 @@ class TimeDomainSolution:
     sleeper_displacements : ndarray, shape (steps_per_period, n_sleepers)
         All sleepers over the last period [m]; in the steady state sleeper i
         lags sleeper 0 by i L / v.
+    rail_displacement_midspan, bending_moment_above_sleeper, bending_moment_midspan,
+    rail_seat_load, foundation_force : ndarray, shape (steps_per_period,)
+        Over the last period: rail at x = L / 2 [m]; EI w'' at x = 0 and
+        L / 2, sagging positive [N m]; pad force on sleeper 0 and force on
+        its foundation, positive in compression [N] (`railtrack.ring_outputs`).
     periods : int
         Periods integrated.
     converged : bool
@@ -70,7 +78,7 @@ class TimeDomainSolution:
         max |w_k - w_{k-1}| / max |w_k| between consecutive periods k [-].
     elements_per_span : int
     steps_per_period : int
-    track : Track
+    passage : Passage
     foundation : object
     step_error : float
         Estimated time-step error, max |w - w_exact| of sleeper 0 over its
@@ -87,9 +95,14 @@ class TimeDomainSolution:
     period_change: np.ndarray
     elements_per_span: int
     steps_per_period: int
-    track: Track | None = None
+    passage: Passage | None = None
     foundation: Any = None
     step_error: float = float("nan")
+    rail_displacement_midspan: np.ndarray | None = None
+    bending_moment_above_sleeper: np.ndarray | None = None
+    bending_moment_midspan: np.ndarray | None = None
+    rail_seat_load: np.ndarray | None = None
+    foundation_force: np.ndarray | None = None
 
 
 _FINITE = (
@@ -98,9 +111,9 @@ _FINITE = (
 )
 
 
-def _when(track: Track, steps: int, n: int, periods: int) -> str:
+def _when(passage: Passage, steps: int, n: int, periods: int) -> str:
     """Where step n + 1 of period `periods` ends, for messages."""
-    t = (periods - 1 + (n + 1) / steps) * float(track.period)
+    t = (periods - 1 + (n + 1) / steps) * float(passage.period)
     return f"at step {n + 1} of {steps} in period {periods} (t = {t:.6g} s)"
 
 
@@ -112,6 +125,7 @@ def _require_count(name: str, value: Any) -> int:
 
 def simulate_time_domain(
     track: Track,
+    train: Train,
     foundation,
     elements_per_span: int = 8,
     steps_per_period: int = 2400,
@@ -139,7 +153,7 @@ def simulate_time_domain(
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
         Track and train; H / L must be an integer (the number of sleepers on
         the ring).  Trains whose H / L is not an integer are not handled (a
         ring of a common multiple of H and L would be).
@@ -200,11 +214,12 @@ def simulate_time_domain(
 
     Examples
     --------
-    >>> from railtrack import Track, LinearFoundation
-    >>> result = simulate_time_domain(Track.paper(), LinearFoundation.paper(), 2, 480)
+    >>> from railtrack import Track, Train, LinearFoundation
+    >>> result = simulate_time_domain(Track.paper(), Train.paper(), LinearFoundation.paper(), 2, 480)
     >>> result.converged, round(1e3 * float(result.sleeper_displacement.min()), 2)
     (True, -1.13)
     """
+    passage = Passage(track, train)
     elements_per_span = _require_count("elements_per_span", elements_per_span)
     steps_per_period = _require_count("steps_per_period", steps_per_period)
     max_periods = _require_count("max_periods", max_periods)
@@ -216,18 +231,18 @@ def simulate_time_domain(
         raise ValueError(f"warn_step_error must be a finite number > 0 or None; got {warn_step_error!r}")
     if start not in ("static", "rest"):
         raise ValueError(f"start must be 'static' or 'rest'; got {start!r}")
-    check_run_cost(sleepers_on_ring(track), elements_per_span, steps_per_period, max_periods)
-    check_steps_per_period(track, steps_per_period)
+    check_run_cost(sleepers_on_ring(passage), elements_per_span, steps_per_period, max_periods)
+    check_steps_per_period(passage, steps_per_period)
     foundation = as_foundation(foundation)
-    mesh = ring_mesh(track, elements_per_span)
+    mesh = ring_mesh(passage, elements_per_span)
     reference = k0, _ = reference_law(foundation)
-    n_steps, dt = steps_per_period, float(track.period) / steps_per_period
+    n_steps, dt = steps_per_period, float(passage.period) / steps_per_period
     times = dt * np.arange(n_steps)
     loads = wheel_load_entries(mesh, times)
 
     # Newton's tolerance is relative to the mean static deflection: the load
     # per sleeper 2 Q L / H on the pad and the reference foundation in series.
-    scale = float(track.static_load_per_sleeper) * (1.0 / k0 + 1.0 / float(track.pad_stiffness))
+    scale = float(passage.static_load_per_sleeper) * (1.0 / k0 + 1.0 / float(passage.pad_stiffness))
     newton_abs = newton_tol * scale
 
     load = np.zeros(mesh.n_dofs)
@@ -247,7 +262,7 @@ def simulate_time_domain(
         u = np.zeros(mesh.n_dofs)
         a = spla.splu(mesh.mass.tocsc()).solve(load)
         linearized_at = 0.0
-    step_error = check_step_error(track, foundation, linearized_at, steps_per_period,
+    step_error = check_step_error(passage, foundation, linearized_at, steps_per_period,
                                   elements_per_span, warn_step_error)
     stepper = NewmarkStepper(mesh, foundation, reference, dt, loads, newton_abs, max_newton_iterations)
 
@@ -255,6 +270,8 @@ def simulate_time_domain(
     bound = GROWTH_LIMIT * max(scale, float(np.max(np.abs(u[mesh.sleeper_dofs]))))
     record = np.empty((n_steps, mesh.n_sleepers))
     rail = np.empty(n_steps)
+    watched = watched_dofs(mesh)
+    states, rates = np.empty((n_steps, watched.size)), np.empty((n_steps, watched.size))
     previous: np.ndarray | None = None
     changes: list[float] = []
     converged = False
@@ -262,21 +279,22 @@ def simulate_time_domain(
         for n in range(n_steps):
             record[n] = u[mesh.sleeper_dofs]
             rail[n] = u[mesh.rail_dofs[0]]
+            states[n], rates[n] = u[watched], v[watched]
             try:
                 u, v, a = stepper.step(u, v, a, (n + 1) % n_steps)
             except NonFiniteLawError as error:
-                raise NonFiniteLawError(f"{error}, {_when(track, n_steps, n, periods)}{_FINITE}") from None
+                raise NonFiniteLawError(f"{error}, {_when(passage, n_steps, n, periods)}{_FINITE}") from None
             except RuntimeError as error:
                 grown = float(np.max(np.abs(u[mesh.sleeper_dofs]))) / scale
                 hint = f"; {instability_hint(foundation)}" if grown > 100.0 else ""
-                raise RuntimeError(f"{error}, {_when(track, n_steps, n, periods)}, the sleepers having "
+                raise RuntimeError(f"{error}, {_when(passage, n_steps, n, periods)}, the sleepers having "
                                    f"reached {grown:.3g} times the static deflection{hint}") from None
             reached = float(np.max(np.abs(u[mesh.sleeper_dofs])))
             if not reached <= bound:  # also catches NaN
                 raise RuntimeError(
                     f"the response grew without bound in period {periods}: a sleeper reached "
                     f"|w| = {reached:.3g} m, {reached / scale:.3g} times the static deflection scale "
-                    f"{scale:.3g} m, {_when(track, n_steps, n, periods)}; {instability_hint(foundation)}"
+                    f"{scale:.3g} m, {_when(passage, n_steps, n, periods)}; {instability_hint(foundation)}"
                 )
         current = record[:, 0].copy()
         if previous is not None:
@@ -297,7 +315,8 @@ def simulate_time_domain(
         period_change=np.array(changes),
         elements_per_span=elements_per_span,
         steps_per_period=steps_per_period,
-        track=track,
+        passage=passage,
         foundation=foundation,
         step_error=step_error,
+        **ring_outputs(mesh, foundation, states, rates),
     )

@@ -36,7 +36,7 @@ import numpy as np
 
 from .fem import ring_mesh, sleepers_on_ring, wheel_load_entries
 from .newmark import reference_law
-from .track import Track
+from .passage import Passage
 
 __all__ = [
     "TimeStepWarning",
@@ -63,12 +63,12 @@ class TimeStepWarning(UserWarning):
     """The estimated time-step error of a time-domain run is larger than asked for."""
 
 
-def minimum_steps_per_period(track: Track) -> int:
+def minimum_steps_per_period(passage: Passage) -> int:
     """Fewest steps per period accepted: `MIN_STEPS_PER_SPAN` times H / L."""
-    return MIN_STEPS_PER_SPAN * sleepers_on_ring(track)
+    return MIN_STEPS_PER_SPAN * sleepers_on_ring(passage)
 
 
-def check_steps_per_period(track: Track, steps_per_period: int) -> None:
+def check_steps_per_period(passage: Passage, steps_per_period: int) -> None:
     """Refuse a step count that cannot represent the moving load on the ring.
 
     Raises
@@ -77,9 +77,9 @@ def check_steps_per_period(track: Track, steps_per_period: int) -> None:
         If `steps_per_period` is not a multiple of H / L, or gives fewer than
         `MIN_STEPS_PER_SPAN` steps per sleeper-passing time L / v.
     """
-    sleepers = sleepers_on_ring(track)
-    span_time = float(track.sleeper_spacing) / float(track.speed)
-    smallest = minimum_steps_per_period(track)
+    sleepers = sleepers_on_ring(passage)
+    span_time = float(passage.sleeper_spacing) / float(passage.speed)
+    smallest = minimum_steps_per_period(passage)
     suggestion = max(smallest, sleepers * math.ceil(steps_per_period / sleepers))
     if steps_per_period % sleepers:
         raise ValueError(
@@ -131,7 +131,7 @@ def _span_response(blocks, n_sleepers, harmonics, omega, loads):
 
 def _span_loads(mesh, rows, samples: int) -> np.ndarray:
     """Fourier coefficients, k = 0 .. samples // 2, of the wheel loads on span 0 [N, N m]."""
-    times = float(mesh.track.period) * np.arange(samples) / samples
+    times = float(mesh.passage.period) * np.arange(samples) / samples
     dofs, values = wheel_load_entries(mesh, times)
     local = np.full(mesh.n_dofs, -1)
     local[rows] = np.arange(rows.size)
@@ -144,7 +144,7 @@ def _span_loads(mesh, rows, samples: int) -> np.ndarray:
 
 
 def estimate_step_error(
-    track: Track,
+    passage: Passage,
     stiffness: float,
     damping: float,
     steps_per_period: int,
@@ -154,7 +154,7 @@ def estimate_step_error(
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
         H / L an integer and `steps_per_period` a multiple of it.
     stiffness, damping : float
         Linearized foundation under each sleeper [N/m], [N s/m].
@@ -174,12 +174,12 @@ def estimate_step_error(
 
     Examples
     --------
-    >>> relative, _ = estimate_step_error(Track.paper(), 20e6, 0.2e6, 2400)
+    >>> relative, _ = estimate_step_error(Passage.paper(), 20e6, 0.2e6, 2400)
     >>> f"{relative:.1e}"
     '1.6e-06'
     """
-    mesh = ring_mesh(track, min(int(elements_per_span), ESTIMATE_ELEMENTS))
-    n, period = mesh.n_sleepers, float(track.period)
+    mesh = ring_mesh(passage, min(int(elements_per_span), ESTIMATE_ELEMENTS))
+    n, period = mesh.n_sleepers, float(passage.period)
     rows, blocks = _span_blocks(mesh, stiffness, damping)
     fine = _SAMPLES_PER_ELEMENT * mesh.n_nodes
     # Far above the fine grid the error is second order: estimate it there and scale.
@@ -208,17 +208,17 @@ def estimate_step_error(
     return absolute / float(np.max(np.abs(w_exact))), absolute
 
 
-def steps_for_error(track: Track, steps_per_period: int, relative: float, target: float) -> int:
+def steps_for_error(passage: Passage, steps_per_period: int, relative: float, target: float) -> int:
     """Steps per period for an error `target`, from one at `relative`, by the dt^2 law.
 
     Rounded up to a multiple of H / L and at least `minimum_steps_per_period`.
     """
-    sleepers = sleepers_on_ring(track)
+    sleepers = sleepers_on_ring(passage)
     wanted = steps_per_period * math.sqrt(max(relative, 0.0) / target)
-    return max(minimum_steps_per_period(track), sleepers * math.ceil(wanted / sleepers))
+    return max(minimum_steps_per_period(passage), sleepers * math.ceil(wanted / sleepers))
 
 
-def check_step_error(track: Track, foundation, w: float, steps: int, elements: int,
+def check_step_error(passage: Passage, foundation, w: float, steps: int, elements: int,
                      warn_above: float | None) -> float:
     """`estimate_step_error` for the law linearized at w [m], warning above `warn_above`.
 
@@ -241,11 +241,11 @@ def check_step_error(track: Track, foundation, w: float, steps: int, elements: i
     stiffness, damping = (float(np.ravel(x)[0]) for x in tangent)
     if not (np.isfinite(stiffness) and stiffness > 0 and np.isfinite(damping) and damping >= 0):
         stiffness, damping = reference_law(foundation)
-    relative, absolute = estimate_step_error(track, stiffness, damping, steps, elements)
+    relative, absolute = estimate_step_error(passage, stiffness, damping, steps, elements)
     if relative > warn_above:
-        wanted = steps_for_error(track, steps, relative, warn_above)
+        wanted = steps_for_error(passage, steps, relative, warn_above)
         warnings.warn(
-            f"steps_per_period = {steps} (dt = {1e3 * float(track.period) / steps:.4g} ms): the "
+            f"steps_per_period = {steps} (dt = {1e3 * float(passage.period) / steps:.4g} ms): the "
             f"estimated time-step error is {100 * relative:.3g} % of the peak ({absolute:.3g} m), "
             f"above warn_step_error = {warn_above:g}; use steps_per_period >= {wanted} for less "
             "(the error falls as dt^2), or pass a larger warn_step_error, or None, to accept it",

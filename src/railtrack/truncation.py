@@ -38,8 +38,8 @@ from .foundation_at_rest import static_deflection
 from .foundations import as_foundation
 from .harmonic_balance import HarmonicSystem, NonFiniteForceError, default_samples, synthesize
 from .sleeper import coupling_and_transfer, sleeper_operator
-from .track import Track
-from .train import load_coefficients
+from .passage import Passage
+from .load import load_coefficients
 
 __all__ = [
     "TrackSpectrum",
@@ -87,25 +87,25 @@ class TrackSpectrum:
     def upto(self) -> int:
         return len(self.omega) - 1
 
-    def system(self, track: Track, foundation, harmonics: int, samples: int | None = None) -> HarmonicSystem:
+    def system(self, passage: Passage, foundation, harmonics: int, samples: int | None = None) -> HarmonicSystem:
         """The `HarmonicSystem` of harmonics 0..m, without evaluating eq. (3) again."""
         if harmonics > self.upto:
             raise ValueError(f"the spectrum holds harmonics up to {self.upto}; asked for {harmonics}")
         keep = slice(0, harmonics + 1)
         return HarmonicSystem(
-            track, as_foundation(foundation), harmonics,
+            passage, as_foundation(foundation), harmonics,
             default_samples(harmonics) if samples is None else int(samples),
             self.omega[keep], self.coupling[keep], self.load[keep], self.operator[keep],
         )
 
 
-def track_spectrum(track: Track, upto: int) -> TrackSpectrum:
+def track_spectrum(passage: Passage, upto: int) -> TrackSpectrum:
     """The linear coefficients of eq. (17) (eqs. 3, 8, 16) for n = 0..upto."""
-    omega = track.fundamental_frequency * np.arange(upto + 1)
-    coupling, transfer = coupling_and_transfer(track, omega)
+    omega = passage.fundamental_frequency * np.arange(upto + 1)
+    coupling, transfer = coupling_and_transfer(passage, omega)
     return TrackSpectrum(
-        omega, coupling, load_coefficients(track, omega, transfer),
-        sleeper_operator(track, omega) - coupling,
+        omega, coupling, load_coefficients(passage, omega, transfer),
+        sleeper_operator(passage, omega) - coupling,
     )
 
 
@@ -166,8 +166,8 @@ def truncation_error(system: HarmonicSystem, coefficients: np.ndarray,
 
     Examples
     --------
-    >>> from railtrack import Track, LinearFoundation, solve
-    >>> solution = solve(Track.paper(), LinearFoundation.paper(), harmonics=15)
+    >>> from railtrack import Track, Train, LinearFoundation, solve
+    >>> solution = solve(Track.paper(), Train.paper(), LinearFoundation.paper(), harmonics=15)
     >>> 0.003 < solution.truncation_error < 0.008    # m = 15 misses about 0.5 % of the peak
     True
     """
@@ -179,7 +179,7 @@ def _error_and_tail(system: HarmonicSystem, coefficients: np.ndarray,
     m = system.harmonics
     upto = TAIL_FACTOR * m
     if spectrum is None or spectrum.upto < upto:
-        spectrum = track_spectrum(system.track, upto)
+        spectrum = track_spectrum(system.passage, upto)
     tail = tail_coefficients(system, coefficients, spectrum)[: upto - m]
     samples = _grid(upto)
     neglected = _series(tail, m + 1, samples)
@@ -192,7 +192,7 @@ def _error_and_tail(system: HarmonicSystem, coefficients: np.ndarray,
     return (error / peak if peak > 0 else float("inf")), tail
 
 
-def predict_harmonics(track: Track, foundation, accuracy: float) -> tuple[int, TrackSpectrum]:
+def predict_harmonics(passage: Passage, foundation, accuracy: float) -> tuple[int, TrackSpectrum]:
     """Smallest m whose neglected harmonics, predicted before solving, are below `accuracy`.
 
     The prediction is eq. (23) with the law linearised about its static
@@ -201,7 +201,7 @@ def predict_harmonics(track: Track, foundation, accuracy: float) -> tuple[int, T
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     foundation : Foundation
     accuracy : float
         Target relative error [-], 0 < accuracy < 1.
@@ -213,8 +213,8 @@ def predict_harmonics(track: Track, foundation, accuracy: float) -> tuple[int, T
     spectrum : TrackSpectrum
         The linear coefficients up to at least 8 m, for the solve and its estimate.
     """
-    mass = float(track.sleeper_mass)
-    mean = static_deflection(foundation, float(track.static_load_per_sleeper))
+    mass = float(passage.sleeper_mass)
+    mean = static_deflection(foundation, float(passage.static_load_per_sleeper))
     if np.isfinite(mean):
         stiffness, damping = (float(np.ravel(x)[0]) for x in
                               foundation.tangent(np.array([mean]), np.zeros(1)))
@@ -222,9 +222,9 @@ def predict_harmonics(track: Track, foundation, accuracy: float) -> tuple[int, T
         stiffness, damping = foundation.linearization()
     # m is usually below H / L; room for a quarter more spares a second
     # evaluation of eq. (3) when the solve asks for a larger m
-    upto = TAIL_FACTOR * max(8, int(np.ceil(1.25 * track.wagon_length / track.sleeper_spacing)))
+    upto = TAIL_FACTOR * max(8, int(np.ceil(1.25 * passage.wagon_length / passage.sleeper_spacing)))
     while True:
-        spectrum = track_spectrum(track, upto)
+        spectrum = track_spectrum(passage, upto)
         response = _linearised_response(spectrum, 0.0, stiffness, damping, mass)
         if np.isfinite(mean):
             response[0] = mean

@@ -26,7 +26,7 @@ from ..harmonic_balance import HarmonicSystem, harmonic_system, nonlinear_coeffi
 from ..linear import analytic_coefficients
 from ..solution import Solution
 from ..solve import solve
-from ..track import Track
+from ..passage import Passage
 from .style import MM, TIME_LABEL, new_figure
 
 __all__ = [
@@ -76,7 +76,7 @@ def plot_aft(solution: Solution, samples: int | None = None) -> Figure:
         and ``"G-dropped"`` (n = m+1..N/2).
     """
     m = solution.harmonics
-    system = harmonic_system(solution.track, solution.foundation, m,
+    system = harmonic_system(solution.passage, solution.foundation, m,
                              samples or solution.samples)
     c = solution.coefficients[m:]
     N, T = system.samples, solution.period
@@ -151,7 +151,7 @@ def plot_contraction_factors(system: HarmonicSystem) -> Figure:
     return fig
 
 
-def convergence_histories(track: Track, laws: Mapping[str, object], harmonics: int = 15,
+def convergence_histories(passage: Passage, laws: Mapping[str, object], harmonics: int = 15,
                           *, tol: float = 1e-10, fixed_point_iterations: int = 3000
                           ) -> dict[str, dict[str, Solution]]:
     """Solve each law with the fixed point and with Newton (library defaults otherwise).
@@ -161,7 +161,7 @@ def convergence_histories(track: Track, laws: Mapping[str, object], harmonics: i
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     laws : mapping of str to foundation
         Name (for the panel title) to law.
     harmonics : int
@@ -178,9 +178,9 @@ def convergence_histories(track: Track, laws: Mapping[str, object], harmonics: i
     """
     return {
         name: {
-            "fixed-point": solve(track, law, harmonics, method="fixed-point", tol=tol,
+            "fixed-point": solve(passage.track, passage.train, law, harmonics, method="fixed-point", tol=tol,
                                  max_iterations=fixed_point_iterations),
-            "newton": solve(track, law, harmonics, method="newton", tol=tol),
+            "newton": solve(passage.track, passage.train, law, harmonics, method="newton", tol=tol),
         }
         for name, law in laws.items()
     }
@@ -256,7 +256,7 @@ def convergence_table(histories: Mapping[str, Mapping[str, Solution]], tail: int
     return "\n".join(lines)
 
 
-def change_and_error_table(track: Track, foundation, iterations: Sequence[int] = (15, 50, 100),
+def change_and_error_table(passage: Passage, foundation, iterations: Sequence[int] = (15, 50, 100),
                            harmonics: int = 15) -> str:
     """Markdown table: change of the mean between fixed-point iterates against its error.
 
@@ -266,7 +266,7 @@ def change_and_error_table(track: Track, foundation, iterations: Sequence[int] =
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     foundation : LinearFoundation
         The exact solution needs the linear law.
     iterations : sequence of int
@@ -279,7 +279,7 @@ def change_and_error_table(track: Track, foundation, iterations: Sequence[int] =
     str
         Columns k, |c_0(k+1) - c_0k| [mm], |c_0k - c_0| [mm], their ratio.
     """
-    exact = analytic_coefficients(track, foundation, harmonics)[harmonics].real
+    exact = analytic_coefficients(passage, foundation, harmonics)[harmonics].real
     lines = [
         r"| $k$ | change $\lvert c_{0(k+1)} - c_{0k}\rvert$ [mm] "
         r"| error $\lvert c_{0k} - c_0\rvert$ [mm] | change / error |",
@@ -287,7 +287,7 @@ def change_and_error_table(track: Track, foundation, iterations: Sequence[int] =
     ]
     for k in iterations:
         now, then = (
-            solve(track, foundation, harmonics, method="fixed-point",
+            solve(passage.track, passage.train, foundation, harmonics, method="fixed-point",
                   max_iterations=i).mean_displacement
             for i in (k, k + 1)
         )

@@ -25,8 +25,8 @@ from ..receptance import (
     receptance_pole_frequencies,
 )
 from ..sleeper import rail_coupling
-from ..track import Track
-from ..train import wheel_passage_times
+from ..passage import Passage
+from ..load import wheel_passage_times
 from .schematic import draw_track_schematic
 from .style import MM, label_displacement_axes, new_figure
 from .tables import (
@@ -61,13 +61,13 @@ RECEPTANCE_UNIT = 1e6
 """m/N to mm/kN (1 m/N = 1e3 mm / 1e-3 kN)."""
 
 
-def plot_receptance(track: Track, omega: np.ndarray | None = None,
+def plot_receptance(passage: Passage, omega: np.ndarray | None = None,
                     harmonics: int = 15) -> Figure:
     """|eta_E(omega)| of eq. (3) on log axes, with the train's harmonics and the poles.
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     omega : ndarray, optional
         Frequencies to plot [rad/s], default 4000 log-spaced from 0.1 to 5000.
     harmonics : int
@@ -82,25 +82,25 @@ def plot_receptance(track: Track, omega: np.ndarray | None = None,
     if omega is None:
         omega = np.geomspace(0.1, 5000.0, 4000)
     omega = np.asarray(omega, dtype=float)
-    eta = rail_receptance(track, omega)
+    eta = rail_receptance(passage, omega)
     fig, ax = new_figure(width=7.5, height=4.2)
     ax.loglog(omega, np.abs(eta) * RECEPTANCE_UNIT, color="0.15", lw=1.0,
               label=r"$|\eta_E(\omega)|$", gid="eta_E")
-    low = omega[omega < 0.5 * critical_frequency(track)]
-    ax.loglog(low, RECEPTANCE_UNIT / (track.rail_linear_mass * track.sleeper_spacing * low**2),
+    low = omega[omega < 0.5 * critical_frequency(passage)]
+    ax.loglog(low, RECEPTANCE_UNIT / (passage.rail_linear_mass * passage.sleeper_spacing * low**2),
               color="tab:blue", ls="--", lw=0.9, label=r"$1/(\rho S L \omega^2)$: one span as a mass",
               gid="mass-asymptote")
-    poles = receptance_pole_frequencies(track, omega.max())
+    poles = receptance_pole_frequencies(passage, omega.max())
     poles = poles[poles >= omega.min()]
-    star = critical_frequency(track)
+    star = critical_frequency(passage)
     for k, p in enumerate(poles):
         is_star = np.isclose(p, star)
         ax.axvline(p, color="tab:red" if is_star else "tab:purple", lw=1.2 if is_star else 0.6,
                    ls="-" if is_star else ":", zorder=0,
                    label=(r"$\omega^* = v^2\sqrt{\rho S/EI}$" if is_star else
                           (r"other poles, $\cos k_bL = \cos(\omega L/v)$" if k == 1 else None)))
-    wn = track.fundamental_frequency * np.arange(1, harmonics + 1)
-    ax.plot(wn, np.abs(rail_receptance(track, wn)) * RECEPTANCE_UNIT, "o", ms=4,
+    wn = passage.fundamental_frequency * np.arange(1, harmonics + 1)
+    ax.plot(wn, np.abs(rail_receptance(passage, wn)) * RECEPTANCE_UNIT, "o", ms=4,
             color="tab:green", label=rf"train harmonics $\omega_n$, $n = 1..{harmonics}$",
             gid="harmonics")
     ax.set_xlabel(r"angular frequency $\omega$ [rad/s]")
@@ -110,15 +110,15 @@ def plot_receptance(track: Track, omega: np.ndarray | None = None,
     return fig
 
 
-def receptance_check_table(track: Track, omega: Sequence[float]) -> str:
+def receptance_check_table(passage: Passage, omega: Sequence[float]) -> str:
     """Markdown table of eta_E by the closed form of eq. (3) and by the lattice sum.
 
     Values in mm/kN with 9 significant digits and their relative difference
     (written "< 1e-12" below that, so that the printed table is stable).
     """
     omega = np.asarray(omega, dtype=float)
-    closed = rail_receptance(track, omega)
-    lattice = rail_receptance_lattice_sum(track, omega)
+    closed = rail_receptance(passage, omega)
+    lattice = rail_receptance_lattice_sum(passage, omega)
     rel = np.abs(closed - lattice) / np.abs(lattice)
     rows = [(f"{w:g}", f"{c * RECEPTANCE_UNIT:.9g}", f"{s * RECEPTANCE_UNIT:.9g}",
              f"{r:.0e}" if r >= 1e-12 else "< 1e-12")
@@ -127,7 +127,7 @@ def receptance_check_table(track: Track, omega: Sequence[float]) -> str:
                            r"$\eta_E$ lattice sum [mm/kN]", "relative difference"], rows)
 
 
-def plot_rail_coupling(track: Track, omega: np.ndarray | None = None,
+def plot_rail_coupling(passage: Passage, omega: np.ndarray | None = None,
                        harmonics: int = 15) -> Figure:
     """The rail–sleeper coupling P(omega) of eq. (16): magnitude and phase.
 
@@ -136,7 +136,7 @@ def plot_rail_coupling(track: Track, omega: np.ndarray | None = None,
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     omega : ndarray, optional
         Frequencies [rad/s], default 4000 log-spaced from 0.1 to 5000.
     harmonics : int
@@ -151,22 +151,22 @@ def plot_rail_coupling(track: Track, omega: np.ndarray | None = None,
     if omega is None:
         omega = np.geomspace(0.1, 5000.0, 4000)
     omega = np.asarray(omega, dtype=float)
-    P = rail_coupling(track, omega)
+    P = rail_coupling(passage, omega)
     fig, (top, bottom) = new_figure(2, 1, width=7.5, height=2.8, sharex=True)
     top.loglog(omega, np.abs(P), color="0.15", lw=1.0, label=r"$|P(\omega)|$", gid="P")
-    top.axhline(track.pad_natural_frequency_squared, color="tab:blue", ls="--", lw=0.9,
+    top.axhline(passage.pad_natural_frequency_squared, color="tab:blue", ls="--", lw=0.9,
                 label=r"$\omega_0^2 = k_1/M$")
     top.loglog(omega, omega**2, color="tab:gray", ls=":", lw=0.9, label=r"$\omega^2$")
-    wn = track.fundamental_frequency * np.arange(1, harmonics + 1)
-    Pn = rail_coupling(track, wn)
+    wn = passage.fundamental_frequency * np.arange(1, harmonics + 1)
+    Pn = rail_coupling(passage, wn)
     top.plot(wn, np.abs(Pn), "o", ms=4, color="tab:green", label=r"$P_n$, $n = 1..%d$" % harmonics)
-    top.axvline(critical_frequency(track), color="tab:red", lw=0.8, label=r"$\omega^*$")
-    top.set_ylim(track.pad_natural_frequency_squared / 30, None)
+    top.axvline(critical_frequency(passage), color="tab:red", lw=0.8, label=r"$\omega^*$")
+    top.set_ylim(passage.pad_natural_frequency_squared / 30, None)
     top.set_ylabel(r"$|P|$ [1/s²]")
     top.legend(fontsize="small", loc="upper left")
     bottom.semilogx(omega, np.degrees(np.angle(P)), color="0.15", lw=1.0, gid="phase")
     bottom.plot(wn, np.degrees(np.angle(Pn)), "o", ms=4, color="tab:green")
-    bottom.axvline(critical_frequency(track), color="tab:red", lw=0.8)
+    bottom.axvline(critical_frequency(passage), color="tab:red", lw=0.8)
     bottom.set_ylabel(r"phase of $P$ [°]")
     bottom.set_xlabel(r"angular frequency $\omega$ [rad/s]")
     for ax in (top, bottom):
@@ -201,7 +201,7 @@ def plot_rail_and_sleeper(solution, samples: int = 400) -> Figure:
     t = np.linspace(0.0, solution.period, samples + 1)
     fig, (ax, pad) = new_figure(2, 1, width=7.5, height=2.8, sharex=True,
                                 gridspec_kw=dict(height_ratios=(1.6, 1.0)))
-    track = solution.track
+    passage = solution.passage
     rail, sleeper = solution.rail_displacement(t), solution.sleeper_displacement(t)
     ax.plot(t, rail * MM, color="tab:blue", lw=1.4,
             label=r"rail above the sleeper, $w_r(0,t)$", gid="rail")
@@ -209,11 +209,11 @@ def plot_rail_and_sleeper(solution, samples: int = 400) -> Figure:
             label=r"sleeper, $w(t)$", gid="sleeper")
     pad.plot(t, (sleeper - rail) * MM, color="tab:green", lw=1.4,
              label=r"pad compression $w - w_r(0,t)$", gid="compression")
-    mean = track.static_load_per_sleeper / track.pad_stiffness
+    mean = passage.static_load_per_sleeper / passage.pad_stiffness
     pad.axhline(mean * MM, color="0.3", ls="--", lw=0.9, label=r"$2QL/(Hk_1)$",
                 gid="mean-compression")
     for axes in (ax, pad):
-        for k, tw in enumerate(wheel_passage_times(track)):
+        for k, tw in enumerate(wheel_passage_times(passage)):
             axes.axvline(tw, color="0.5", ls=":", lw=1.2,
                          label="wheel above the sleeper" if k == 0 and axes is ax else None)
     label_displacement_axes(ax, ylabel="displacement [mm]\n(up > 0)")

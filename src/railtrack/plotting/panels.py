@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import LinearFoundation, Solution, Track, solve
+from .. import LinearFoundation, Solution, Passage, solve
 from .style import MM
 
 __all__ = [
@@ -149,27 +149,27 @@ class PanelData:
 
 
 
-def period_times(track: Track, points: int) -> np.ndarray:
+def period_times(passage: Passage, points: int) -> np.ndarray:
     if isinstance(points, bool) or not isinstance(points, (int, np.integer)) or points < 2:
         raise ValueError(f"points must be an integer >= 2; got {points!r}")
-    return np.linspace(0.0, track.period, int(points))
+    return np.linspace(0.0, passage.period, int(points))
 
 
-def paper_iteration(track, foundation, harmonics, iterations) -> Solution:
+def paper_iteration(passage, foundation, harmonics, iterations) -> Solution:
     """`iterations` steps of eq. (21) from c = 0, as in the paper.
 
     Fewer only if the relative residual reaches 1e-10 first, which none of
     the paper's cases does within its k = 100.
     """
-    return solve(track, foundation, harmonics, method="fixed-point",
+    return solve(passage.track, passage.train, foundation, harmonics, method="fixed-point",
                  max_iterations=int(iterations))
 
 
-def converged_reference(track, foundation, harmonics) -> Solution:
+def converged_reference(passage, foundation, harmonics) -> Solution:
     """Converged solution: eq. (23) for a linear law, Newton to 1e-10 otherwise."""
     if isinstance(foundation, LinearFoundation):
-        return solve(track, foundation, harmonics, method="analytic")
-    return solve(track, foundation, harmonics, method="newton", tol=REFERENCE_TOL, strict=True)
+        return solve(passage.track, passage.train, foundation, harmonics, method="analytic")
+    return solve(passage.track, passage.train, foundation, harmonics, method="newton", tol=REFERENCE_TOL, strict=True)
 
 
 def reference_label_for(foundation, harmonics) -> str:

@@ -15,7 +15,7 @@ from typing import Sequence
 
 import numpy as np
 
-from .. import BilinearFoundation, CubicFoundation, LinearFoundation, Track, TruncationWarning, solve
+from .. import BilinearFoundation, CubicFoundation, LinearFoundation, Passage, TruncationWarning, solve
 from .panels import (
     PAPER_HARMONICS,
     PAPER_ITERATIONS,
@@ -40,7 +40,7 @@ __all__ = [
 
 
 def figure3_data(
-    track: Track | None = None,
+    passage: Passage | None = None,
     foundation: LinearFoundation | None = None,
     *,
     iterations: Sequence[int] = (15, 100),
@@ -51,8 +51,8 @@ def figure3_data(
 
     Parameters
     ----------
-    track : Track, optional
-        Default `Track.paper()` (Table 1).
+    passage : Passage, optional
+        Default `Passage.paper()` (Table 1).
     foundation : LinearFoundation, optional
         Default `LinearFoundation.paper()`: k2 = 20 MN/m, eta2 = 0.2 MN s/m.
     iterations : sequence of int
@@ -69,14 +69,14 @@ def figure3_data(
         ``extra["Newton"]`` = Newton's solution of eq. (17), started from
         c = 0.
     """
-    track = Track.paper() if track is None else track
+    passage = Passage.paper() if passage is None else passage
     foundation = LinearFoundation.paper() if foundation is None else foundation
-    times = period_times(track, points)
-    solutions = [paper_iteration(track, foundation, harmonics, k) for k in iterations]
-    analytic = converged_reference(track, foundation, harmonics)
+    times = period_times(passage, points)
+    solutions = [paper_iteration(passage, foundation, harmonics, k) for k in iterations]
+    analytic = converged_reference(passage, foundation, harmonics)
     # Newton from c = 0, not from its default start (eq. 23 itself for a linear law),
     # so that its agreement with eq. (23) is an independent check.
-    newton = solve(track, foundation, harmonics, method="newton", tol=REFERENCE_TOL,
+    newton = solve(passage.track, passage.train, foundation, harmonics, method="newton", tol=REFERENCE_TOL,
                    strict=True, initial=np.zeros(harmonics + 1))
     return make_panel("k", iterations, times, solutions, [analytic], "analytic, eq. (23)",
                   f"fixed point, eq. (21), m = {harmonics}",
@@ -84,7 +84,7 @@ def figure3_data(
 
 
 def figure4_data(
-    track: Track | None = None,
+    passage: Passage | None = None,
     foundation: BilinearFoundation | None = None,
     *,
     harmonics: Sequence[int] = (1, 3, 5, 10, 15, 20),
@@ -98,7 +98,7 @@ def figure4_data(
 
     Parameters
     ----------
-    track : Track, optional
+    passage : Passage, optional
         Default Table 1.
     foundation : BilinearFoundation, optional
         Default `BilinearFoundation.paper(0.5)`: k2+ = 20 MN/m, k2- = 10 MN/m,
@@ -120,24 +120,24 @@ def figure4_data(
     (PanelData, PanelData)
         The upper (parameter "m") and the lower (parameter "k") panel.
     """
-    track = Track.paper() if track is None else track
+    passage = Passage.paper() if passage is None else passage
     foundation = BilinearFoundation.paper(0.5) if foundation is None else foundation
-    times = period_times(track, points)
-    by_m = [paper_iteration(track, foundation, m, fixed_iterations) for m in harmonics]
-    by_k = [paper_iteration(track, foundation, fixed_harmonics, k) for k in iterations]
+    times = period_times(passage, points)
+    by_m = [paper_iteration(passage, foundation, m, fixed_iterations) for m in harmonics]
+    by_k = [paper_iteration(passage, foundation, fixed_harmonics, k) for k in iterations]
     upper = make_panel(
-        "m", harmonics, times, by_m, [converged_reference(track, foundation, reference_harmonics)],
+        "m", harmonics, times, by_m, [converged_reference(passage, foundation, reference_harmonics)],
         reference_label_for(foundation, reference_harmonics), f"fixed point, k = {fixed_iterations}",
     )
     lower = make_panel(
-        "k", iterations, times, by_k, [converged_reference(track, foundation, fixed_harmonics)],
+        "k", iterations, times, by_k, [converged_reference(passage, foundation, fixed_harmonics)],
         reference_label_for(foundation, fixed_harmonics), f"fixed point, m = {fixed_harmonics}",
     )
     return upper, lower
 
 
 def figure5_data(
-    track: Track | None = None,
+    passage: Passage | None = None,
     foundation: BilinearFoundation | None = None,
     *,
     ratios: Sequence[float] = (1.0, 0.75, 0.5, 0.25, 0.0),
@@ -149,7 +149,7 @@ def figure5_data(
 
     Parameters
     ----------
-    track : Track, optional
+    passage : Passage, optional
         Default Table 1.
     foundation : BilinearFoundation, optional
         Supplies k2+ and eta2 (default `BilinearFoundation.paper()`); its
@@ -165,23 +165,23 @@ def figure5_data(
     PanelData
         parameter "e"; one Newton reference per ratio.
     """
-    track = Track.paper() if track is None else track
+    passage = Passage.paper() if passage is None else passage
     base = BilinearFoundation.paper() if foundation is None else foundation
     laws = [
         dataclasses.replace(base, tension_stiffness=e * base.compression_stiffness)
         for e in ratios
     ]
-    times = period_times(track, points)
+    times = period_times(passage, points)
     return make_panel(
         "e", ratios, times,
-        [paper_iteration(track, law, harmonics, iterations) for law in laws],
-        [converged_reference(track, law, harmonics) for law in laws],
+        [paper_iteration(passage, law, harmonics, iterations) for law in laws],
+        [converged_reference(passage, law, harmonics) for law in laws],
         reference_label_for(base, harmonics), f"fixed point, m = {harmonics}, k = {iterations}",
     )
 
 
 def figure6_data(
-    track: Track | None = None,
+    passage: Passage | None = None,
     foundation: CubicFoundation | None = None,
     *,
     iterations: Sequence[int] = (5, 10, 15, 30, 100),
@@ -192,7 +192,7 @@ def figure6_data(
 
     Parameters
     ----------
-    track : Track, optional
+    passage : Passage, optional
         Default Table 1.
     foundation : CubicFoundation, optional
         Default `CubicFoundation.paper(0.8)`: k2 = 20 MN/m,
@@ -206,19 +206,19 @@ def figure6_data(
     PanelData
         parameter "k"; reference = Newton at the same m.
     """
-    track = Track.paper() if track is None else track
+    passage = Passage.paper() if passage is None else passage
     foundation = CubicFoundation.paper(0.8) if foundation is None else foundation
-    times = period_times(track, points)
+    times = period_times(passage, points)
     return make_panel(
         "k", iterations, times,
-        [paper_iteration(track, foundation, harmonics, k) for k in iterations],
-        [converged_reference(track, foundation, harmonics)],
+        [paper_iteration(passage, foundation, harmonics, k) for k in iterations],
+        [converged_reference(passage, foundation, harmonics)],
         reference_label_for(foundation, harmonics), f"fixed point, m = {harmonics}",
     )
 
 
 def figure7_data(
-    track: Track | None = None,
+    passage: Passage | None = None,
     foundation: CubicFoundation | None = None,
     *,
     epsilons: Sequence[float] = (0.0, 0.2, 0.4, 0.6, 0.8, 1.0),
@@ -230,7 +230,7 @@ def figure7_data(
 
     Parameters
     ----------
-    track : Track, optional
+    passage : Passage, optional
         Default Table 1.
     foundation : CubicFoundation, optional
         Supplies k2, k3 and eta2 (default `CubicFoundation.paper()`); its
@@ -246,20 +246,20 @@ def figure7_data(
     PanelData
         parameter "epsilon"; one Newton reference per eps.
     """
-    track = Track.paper() if track is None else track
+    passage = Passage.paper() if passage is None else passage
     base = CubicFoundation.paper() if foundation is None else foundation
     laws = [dataclasses.replace(base, epsilon=eps) for eps in epsilons]
-    times = period_times(track, points)
+    times = period_times(passage, points)
     return make_panel(
         "epsilon", epsilons, times,
-        [paper_iteration(track, law, harmonics, iterations) for law in laws],
-        [converged_reference(track, law, harmonics) for law in laws],
+        [paper_iteration(passage, law, harmonics, iterations) for law in laws],
+        [converged_reference(passage, law, harmonics) for law in laws],
         reference_label_for(base, harmonics), f"fixed point, m = {harmonics}, k = {iterations}",
     )
 
 
 def harmonic_convergence_data(
-    track: Track | None = None,
+    passage: Passage | None = None,
     foundation=None,
     *,
     harmonics: Sequence[int] = (5, 10, 15, 20, 40),
@@ -273,7 +273,7 @@ def harmonic_convergence_data(
 
     Parameters
     ----------
-    track : Track, optional
+    passage : Passage, optional
         Default Table 1.
     foundation : optional
         Any law; default `BilinearFoundation.paper(0.5)`.
@@ -289,16 +289,16 @@ def harmonic_convergence_data(
         parameter "m"; every curve solved by Newton to a relative residual
         of 1e-10; the reference likewise (eq. 23 for a linear law).
     """
-    track = Track.paper() if track is None else track
+    passage = Passage.paper() if passage is None else passage
     foundation = BilinearFoundation.paper(0.5) if foundation is None else foundation
-    times = period_times(track, points)
+    times = period_times(passage, points)
     with warnings.catch_warnings():
         # small m on purpose: the figure shows what truncation costs
         warnings.simplefilter("ignore", TruncationWarning)
         solutions = [
-            solve(track, foundation, m, method="newton", tol=REFERENCE_TOL, strict=True)
+            solve(passage.track, passage.train, foundation, m, method="newton", tol=REFERENCE_TOL, strict=True)
             for m in harmonics
         ]
     return make_panel("m", harmonics, times, solutions,
-                  [converged_reference(track, foundation, reference_harmonics)],
+                  [converged_reference(passage, foundation, reference_harmonics)],
                   reference_label_for(foundation, reference_harmonics), "Newton")

@@ -6,7 +6,7 @@ units, no plotting), and a plotting function, ``figureN``, that draws them
 and returns a `matplotlib.figure.Figure` with millimetres and seconds on
 the axes.  The defaults are the paper's parameters:
 
-* the track and train of Table 1, `Track.paper()`;
+* the track and train of Table 1, `Passage.paper()`;
 * linear foundation k2 = 20 MN/m, eta2 = 0.2 MN s/m (eq. 22, Figure 3);
 * bilinear foundation k2+ = 20 MN/m, k2- = e k2+, e = 0.5 (eq. 24,
   Figures 4 and 5);
@@ -44,8 +44,8 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from .. import BilinearFoundation, CubicFoundation, LinearFoundation, Track
-from ..train import wheel_passage_times
+from .. import BilinearFoundation, CubicFoundation, LinearFoundation, Passage
+from ..load import wheel_passage_times
 from .paper_figure_data import (
     figure3_data,
     figure4_data,
@@ -81,17 +81,17 @@ def _colours(count: int) -> list:
     return [plt.get_cmap("viridis")(x) for x in np.linspace(0.0, 0.85, count)]
 
 
-def _mark_wheels(ax: Axes, track: Track) -> None:
+def _mark_wheels(ax: Axes, passage: Passage) -> None:
     """Dotted verticals where a wheel is above the sleeper (front at 0 and T, back at D/v)."""
-    front, back = wheel_passage_times(track)
-    for time, name in ((front, "front wheel"), (back, "back wheel"), (track.period, None)):
+    front, back = wheel_passage_times(passage)
+    for time, name in ((front, "front wheel"), (back, "back wheel"), (passage.period, None)):
         ax.axvline(time, color="0.6", linestyle=":", linewidth=0.8, zorder=0)
         if name:
             ax.text(time, 0.98, f"{name} ", transform=ax.get_xaxis_transform(),
                     fontsize=7, color="0.4", rotation=90, va="top", ha="left")
 
 
-def _draw_panel(ax: Axes, data: PanelData, track: Track, *, title: str) -> None:
+def _draw_panel(ax: Axes, data: PanelData, passage: Passage, *, title: str) -> None:
     symbol = _SYMBOLS.get(data.parameter, data.parameter)
     for colour, value, w in zip(_colours(len(data.values)), data.values, data.displacements):
         ax.plot(data.times, w * MM, color=colour, linewidth=1.4, label=f"{symbol} = {value:g}")
@@ -99,29 +99,29 @@ def _draw_panel(ax: Axes, data: PanelData, track: Track, *, title: str) -> None:
     for i, w in enumerate(references):
         ax.plot(data.times, w * MM, color="black", linestyle="--", linewidth=0.9,
                 label=f"{data.reference_label} (converged)" if i == 0 else None)
-    _mark_wheels(ax, track)
+    _mark_wheels(ax, passage)
     label_displacement_axes(ax)
-    ax.set_xlim(0.0, track.period)
+    ax.set_xlim(0.0, passage.period)
     ax.set_title(f"{title}: {data.method}", fontsize=10)
     ax.legend(loc="lower center", bbox_to_anchor=(0.62, 0.02), fontsize=7.5, ncol=2)
 
 
-def _single_panel(data_function, track, foundation, title: str, **kwargs) -> Figure:
+def _single_panel(data_function, passage, foundation, title: str, **kwargs) -> Figure:
     """Draw the one panel that `data_function` computes (Figures 5, 6 and 7)."""
-    track = Track.paper() if track is None else track
+    passage = Passage.paper() if passage is None else passage
     fig, ax = new_figure()
-    _draw_panel(ax, data_function(track, foundation, **kwargs), track, title=title)
+    _draw_panel(ax, data_function(passage, foundation, **kwargs), passage, title=title)
     return fig
 
 
-def figure3(track: Track | None = None, foundation: LinearFoundation | None = None,
+def figure3(passage: Passage | None = None, foundation: LinearFoundation | None = None,
             **kwargs) -> Figure:
     """Figure 3 of the paper: linear foundation, analytic (eq. 23) against eq. (21).
 
     Keyword arguments are those of `figure3_data`.
     """
-    track = Track.paper() if track is None else track
-    data = figure3_data(track, foundation, **kwargs)
+    passage = Passage.paper() if passage is None else passage
+    data = figure3_data(passage, foundation, **kwargs)
     fig, ax = new_figure()
     ax.plot(data.times, data.reference * MM, color="0.75", linewidth=4.0,
             label=data.reference_label)
@@ -131,51 +131,51 @@ def figure3(track: Track | None = None, foundation: LinearFoundation | None = No
                 label=f"fixed point, eq. (21), k = {k}")
     ax.plot(data.times, data.extra["Newton"] * MM, color="black", linestyle="--",
             linewidth=0.9, label="Newton (converged)")
-    _mark_wheels(ax, track)
+    _mark_wheels(ax, passage)
     label_displacement_axes(ax)
-    ax.set_xlim(0.0, track.period)
+    ax.set_xlim(0.0, passage.period)
     ax.set_title(f"Linear foundation, m = {data.solutions[0].harmonics}", fontsize=10)
     ax.legend(loc="lower center", bbox_to_anchor=(0.62, 0.02), fontsize=8)
     return fig
 
 
-def figure4(track: Track | None = None, foundation: BilinearFoundation | None = None,
+def figure4(passage: Passage | None = None, foundation: BilinearFoundation | None = None,
             **kwargs) -> Figure:
     """Figure 4 of the paper: bilinear foundation, varying m (upper) and k (lower).
 
     Keyword arguments are those of `figure4_data`.
     """
-    track = Track.paper() if track is None else track
-    upper, lower = figure4_data(track, foundation, **kwargs)
+    passage = Passage.paper() if passage is None else passage
+    upper, lower = figure4_data(passage, foundation, **kwargs)
     fig, axes = new_figure(2, 1, sharex=True)
-    _draw_panel(axes[0], upper, track, title="Number of harmonics m")
-    _draw_panel(axes[1], lower, track, title="Number of iterations k")
+    _draw_panel(axes[0], upper, passage, title="Number of harmonics m")
+    _draw_panel(axes[1], lower, passage, title="Number of iterations k")
     axes[0].set_xlabel("")
     return fig
 
 
-def figure5(track: Track | None = None, foundation: BilinearFoundation | None = None,
+def figure5(passage: Passage | None = None, foundation: BilinearFoundation | None = None,
             **kwargs) -> Figure:
     """Figure 5 of the paper: bilinear foundation for several e = k2-/k2+.
 
     Keyword arguments are those of `figure5_data`.
     """
-    return _single_panel(figure5_data, track, foundation, r"Ratio $e = k_2^- / k_2^+$", **kwargs)
+    return _single_panel(figure5_data, passage, foundation, r"Ratio $e = k_2^- / k_2^+$", **kwargs)
 
 
-def figure6(track: Track | None = None, foundation: CubicFoundation | None = None,
+def figure6(passage: Passage | None = None, foundation: CubicFoundation | None = None,
             **kwargs) -> Figure:
     """Figure 6 of the paper: cubic foundation, several numbers of iterations k.
 
     Keyword arguments are those of `figure6_data`.
     """
-    return _single_panel(figure6_data, track, foundation, "Number of iterations k", **kwargs)
+    return _single_panel(figure6_data, passage, foundation, "Number of iterations k", **kwargs)
 
 
-def figure7(track: Track | None = None, foundation: CubicFoundation | None = None,
+def figure7(passage: Passage | None = None, foundation: CubicFoundation | None = None,
             **kwargs) -> Figure:
     """Figure 7 of the paper: cubic foundation for several eps.
 
     Keyword arguments are those of `figure7_data`.
     """
-    return _single_panel(figure7_data, track, foundation, "Nonlinearity parameter ε", **kwargs)
+    return _single_panel(figure7_data, passage, foundation, "Nonlinearity parameter ε", **kwargs)

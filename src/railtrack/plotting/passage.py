@@ -20,7 +20,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from ..solve import solve
-from ..track import Track
+from ..passage import Passage
 from .style import MM, new_figure
 
 __all__ = ["PassageExtremes", "passage_extremes", "passage_study", "plot_passage_study"]
@@ -64,8 +64,8 @@ def passage_extremes(solution, samples: int = 36000) -> PassageExtremes:
     -------
     PassageExtremes
     """
-    track = solution.track
-    spacing, length, speed = track.wheel_spacing, track.wagon_length, track.speed
+    passage = solution.passage
+    spacing, length, speed = passage.wheel_spacing, passage.wagon_length, passage.speed
     if not 0 < spacing < length / 2:
         raise ValueError(f"wheel spacing D = {spacing} m must lie in (0, H/2) = (0, {length / 2}) m")
     x = np.linspace(-spacing / 2, length - spacing / 2, samples, endpoint=False)
@@ -83,13 +83,13 @@ def passage_extremes(solution, samples: int = 36000) -> PassageExtremes:
     )
 
 
-def passage_study(track: Track, laws: Mapping[str, object], speeds: Sequence[float],
+def passage_study(passage: Passage, laws: Mapping[str, object], speeds: Sequence[float],
                   harmonics: int | str = "auto", **track_changes) -> dict:
     """`passage_extremes` for each law at each speed.
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     laws : dict of str -> foundation
         Label -> foundation law.  A `LinearFoundation` is solved by eq. (23),
         any other law by Newton.
@@ -100,7 +100,7 @@ def passage_study(track: Track, laws: Mapping[str, object], speeds: Sequence[flo
         (truncation error below 1e-3 of the peak), since the differences
         studied here are a few tenths of a per cent.
     **track_changes
-        Optional per-label Track overrides: ``label=dict(pad_damping=...)``.
+        Optional per-label overrides of Track or Train fields: ``label=dict(pad_damping=...)``.
 
     Returns
     -------
@@ -111,9 +111,9 @@ def passage_study(track: Track, laws: Mapping[str, object], speeds: Sequence[flo
 
     study = {}
     for label, law in laws.items():
-        base = track.replace(**track_changes.get(label, {}))
+        base = passage.replace(**track_changes.get(label, {}))
         method = "analytic" if isinstance(law, LinearFoundation) else "newton"
-        study[label] = [passage_extremes(solve(base.replace(speed=float(v)), law, harmonics,
+        study[label] = [passage_extremes(solve(base.track, base.train.replace(speed=float(v)), law, harmonics,
                                                method=method))
                         for v in speeds]
     return study

@@ -37,16 +37,16 @@ def rail_span_profiles(solution, wheel_positions: Sequence[float], points: int =
     w : ndarray, shape (len(wheel_positions), points)
         w_r(x, t) [m], positive upward.
     """
-    track = solution.track
-    x = np.linspace(0.0, track.sleeper_spacing, points)
-    t = np.asarray(wheel_positions, dtype=float) / track.speed
+    passage = solution.passage
+    x = np.linspace(0.0, passage.sleeper_spacing, points)
+    t = np.asarray(wheel_positions, dtype=float) / passage.speed
     return x, solution.rail_displacement(t[:, None], x[None, :])
 
 
 def plot_rail_span(solution, wheel_positions: Sequence[float], points: int = 121) -> Figure:
     """One line of w_r(x) [mm] against x [m] per wheel position, sleepers and wheels marked."""
     x, w = rail_span_profiles(solution, wheel_positions, points)
-    span = solution.track.sleeper_spacing
+    span = solution.passage.sleeper_spacing
     fig, ax = new_figure()
     for position, values, marker in zip(wheel_positions, w, "osd^vx"):
         label = f"front wheel at {position:+.2f} m"

@@ -6,7 +6,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 
-from ..track import Track
+from ..passage import Passage
 from .style import new_figure
 
 __all__ = ["draw_track_schematic"]
@@ -38,7 +38,7 @@ def _dimension(ax, x0, x1, y, text, color="0.25"):
     ax.text(0.5 * (x0 + x1), y + 0.06, text, ha="center", va="bottom", color=color)
 
 
-def draw_track_schematic(track: Track, *, sleepers: int = 9, observed: int = 6,
+def draw_track_schematic(passage: Passage, *, sleepers: int = 9, observed: int = 6,
                          back_wheel: int = 3) -> Figure:
     """Schematic of the model of Fig. 1: rail, pads, sleepers, foundation, one wagon.
 
@@ -51,7 +51,7 @@ def draw_track_schematic(track: Track, *, sleepers: int = 9, observed: int = 6,
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
         Its values of L, D, H, v, Q are written on the labels.
     sleepers : int
         Number of sleepers drawn (>= 3).
@@ -117,7 +117,7 @@ def draw_track_schematic(track: Track, *, sleepers: int = 9, observed: int = 6,
             color="tab:orange")
 
     # sleeper spacing L
-    _dimension(ax, xs[1], xs[2], y_gr - 0.45, rf"$L = {track.sleeper_spacing:g}$ m")
+    _dimension(ax, xs[1], xs[2], y_gr - 0.45, rf"$L = {passage.sleeper_spacing:g}$ m")
 
     # wheels: back and front wheel of one wagon, front wheel of the next one
     radius, y_wheel = 0.28, 0.07 + 0.28
@@ -127,7 +127,7 @@ def draw_track_schematic(track: Track, *, sleepers: int = 9, observed: int = 6,
                             gid="wheel", zorder=4))
         ax.add_patch(FancyArrowPatch((x, 1.55), (x, y_wheel + radius + 0.02), arrowstyle="-|>",
                                      mutation_scale=12, color="tab:red", lw=1.6))
-        ax.text(x + 0.08, 1.3, rf"$Q = {track.wheel_load / 1e3:g}$ kN", color="tab:red",
+        ax.text(x + 0.08, 1.3, rf"$Q = {passage.wheel_load / 1e3:g}$ kN", color="tab:red",
                 va="center")
     x_next = -0.35
     ax.add_patch(Circle((x_next, y_wheel), radius, facecolor="white", edgecolor="0.5", lw=1.2,
@@ -136,13 +136,13 @@ def draw_track_schematic(track: Track, *, sleepers: int = 9, observed: int = 6,
                                  arrowstyle="-|>", mutation_scale=12, color="tab:red", lw=1.0,
                                  ls="--", alpha=0.6))
     ax.text(x_next + 0.08, 1.3, "next wagon", color="0.4", va="center", fontsize="small")
-    _dimension(ax, wheel_x[0], wheel_x[1], 1.75, rf"$D = {track.wheel_spacing:g}$ m")
-    _dimension(ax, x_next, wheel_x[1], 2.25, rf"$H = {track.wagon_length:g}$ m")
+    _dimension(ax, wheel_x[0], wheel_x[1], 1.75, rf"$D = {passage.wheel_spacing:g}$ m")
+    _dimension(ax, x_next, wheel_x[1], 2.25, rf"$H = {passage.wagon_length:g}$ m")
 
     # speed
     ax.add_patch(FancyArrowPatch((xo + 0.4, 1.85), (xo + 1.7, 1.85), arrowstyle="-|>",
                                  mutation_scale=14, color="tab:blue", lw=1.8))
-    ax.text(xo + 1.05, 1.92, rf"$v = {track.speed:g}$ m/s", color="tab:blue", ha="center",
+    ax.text(xo + 1.05, 1.92, rf"$v = {passage.speed:g}$ m/s", color="tab:blue", ha="center",
             va="bottom")
     ax.text(right + 0.5, y_gr - 0.75, "not to scale", ha="right", va="bottom", fontsize="small",
             color="0.4", style="italic")

@@ -17,8 +17,8 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from ..sleeper import rail_coupling
-from ..track import Track
-from ..train import load_coefficients
+from ..passage import Passage
+from ..load import load_coefficients
 from .style import new_figure
 
 __all__ = [
@@ -103,7 +103,7 @@ def plot_dirichlet_kernel(orders: Sequence[int] = (2, 5, 20), periods: float = 1
 # Eq. (16): P_n and F_n
 
 
-def vanishing_harmonics(track: Track, harmonics: int, rtol: float = 1e-9) -> np.ndarray:
+def vanishing_harmonics(passage: Passage, harmonics: int, rtol: float = 1e-9) -> np.ndarray:
     """Harmonics n in 0..m where the library's F_n is zero to round-off.
 
     These are the n for which omega_n D / v = 2 pi n D / H is an odd multiple
@@ -112,7 +112,7 @@ def vanishing_harmonics(track: Track, harmonics: int, rtol: float = 1e-9) -> np.
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     harmonics : int
         m.
     rtol : float
@@ -122,12 +122,12 @@ def vanishing_harmonics(track: Track, harmonics: int, rtol: float = 1e-9) -> np.
     -------
     ndarray of int
     """
-    omega = track.fundamental_frequency * np.arange(harmonics + 1)
-    F = load_coefficients(track, omega)
+    omega = passage.fundamental_frequency * np.arange(harmonics + 1)
+    F = load_coefficients(passage, omega)
     return np.flatnonzero(np.abs(F) <= rtol * np.abs(F[0]))
 
 
-def load_spectrum_table(track: Track, harmonics: int = 15) -> str:
+def load_spectrum_table(passage: Passage, harmonics: int = 15) -> str:
     """Markdown table of omega_n, P_n and F_n (eq. 16) for n = 0..m.
 
     Columns: n, f_n = omega_n / 2 pi [Hz], Re P_n and Im P_n [10^6 1/s^2],
@@ -137,7 +137,7 @@ def load_spectrum_table(track: Track, harmonics: int = 15) -> str:
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     harmonics : int
         m.
 
@@ -146,10 +146,10 @@ def load_spectrum_table(track: Track, harmonics: int = 15) -> str:
     str
     """
     n = np.arange(harmonics + 1)
-    omega = track.fundamental_frequency * n
-    P = rail_coupling(track, omega)
-    F = load_coefficients(track, omega)
-    zero = set(vanishing_harmonics(track, harmonics).tolist())
+    omega = passage.fundamental_frequency * n
+    P = rail_coupling(passage, omega)
+    F = load_coefficients(passage, omega)
+    zero = set(vanishing_harmonics(passage, harmonics).tolist())
     lines = [
         r"| $n$ | $f_n$ [Hz] | Re $P_n$ [$10^6$ s$^{-2}$] | Im $P_n$ [$10^6$ s$^{-2}$] "
         r"| $\lvert F_n\rvert$ [m/s²] | arg $F_n$ [°] |",
@@ -167,12 +167,12 @@ def load_spectrum_table(track: Track, harmonics: int = 15) -> str:
     return "\n".join(lines)
 
 
-def plot_load_spectra(track: Track, harmonics: int = 15, points: int = 800) -> Figure:
+def plot_load_spectra(passage: Passage, harmonics: int = 15, points: int = 800) -> Figure:
     """|P_n| and |F_n| of eq. (16) at the harmonics, over the continuous |P(omega)|, |F(omega)|.
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
     harmonics : int
         m: harmonics n = 0..m are marked.
     points : int
@@ -187,17 +187,17 @@ def plot_load_spectra(track: Track, harmonics: int = 15, points: int = 800) -> F
         ``"F-curve"`` and ``"F-vanishing"`` (the n where F_n = 0, y = 0).
     """
     n = np.arange(harmonics + 1)
-    omega1 = track.fundamental_frequency
+    omega1 = passage.fundamental_frequency
     nu = np.linspace(0.0, harmonics + 0.5, points)
-    P_n, F_n = rail_coupling(track, omega1 * n), load_coefficients(track, omega1 * n)
-    P_c, F_c = rail_coupling(track, omega1 * nu), load_coefficients(track, omega1 * nu)
-    zero = vanishing_harmonics(track, harmonics)
+    P_n, F_n = rail_coupling(passage, omega1 * n), load_coefficients(passage, omega1 * n)
+    P_c, F_c = rail_coupling(passage, omega1 * nu), load_coefficients(passage, omega1 * nu)
+    zero = vanishing_harmonics(passage, harmonics)
 
     fig, (top, bottom) = new_figure(2, 1, width=7.0, height=2.7, sharex=True)
     top.plot(nu, np.abs(P_c) / 1e6, color="0.6", lw=1.0, label=r"$|P(\omega)|$", gid="P-curve")
     top.plot(n, np.abs(P_n) / 1e6, "o", color="tab:green", ms=5, label=r"$|P_n|$",
              gid="P-harmonics")
-    top.axhline(track.pad_natural_frequency_squared / 1e6, color="tab:blue", ls="--", lw=0.9,
+    top.axhline(passage.pad_natural_frequency_squared / 1e6, color="tab:blue", ls="--", lw=0.9,
                 label=r"$\omega_0^2 = k_1/M$")
     top.set_ylabel(r"$|P_n|$ [$10^6$ s$^{-2}$]")
     top.set_ylim(bottom=0.0)
@@ -205,7 +205,7 @@ def plot_load_spectra(track: Track, harmonics: int = 15, points: int = 800) -> F
     bottom.plot(nu, np.abs(F_c), color="0.6", lw=1.0, label=r"$|F(\omega)|$", gid="F-curve")
     bottom.plot(n, np.abs(F_n), "o", color="tab:purple", ms=5, label=r"$|F_n|$",
                 gid="F-harmonics")
-    bottom.axhline(track.static_load_per_sleeper / track.sleeper_mass, color="tab:blue",
+    bottom.axhline(passage.static_load_per_sleeper / passage.sleeper_mass, color="tab:blue",
                    ls="--", lw=0.9, label=r"$F_0 = 2QL/(MH)$")
     bottom.plot(zero, np.zeros(len(zero)), "x", color="tab:red", ms=9, mew=2,
                 label=r"$F_n = 0$: wheels cancel (n = " + ", ".join(map(str, zero)) + ")",

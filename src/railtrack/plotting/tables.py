@@ -13,7 +13,7 @@ import numpy as np
 
 from ..foundations import BilinearFoundation, CubicFoundation, LinearFoundation
 from ..receptance import critical_frequency
-from ..track import Track
+from ..passage import Passage
 
 __all__ = [
     "markdown_table",
@@ -40,7 +40,7 @@ def markdown_table(header: Sequence[str], rows: Sequence[Sequence[object]]) -> s
     return "\n".join(lines)
 
 
-# (quantity, symbol, Track field, display unit, SI value of one display unit)
+# (quantity, symbol, field read from the Passage, display unit, SI value of one display unit)
 _TABLE1 = (
     ("Rail mass per length", r"$\rho S$", "rail_linear_mass", "kg/m", 1.0),
     ("Rail bending stiffness", r"$EI$", "rail_bending_stiffness", "MN·m²", 1e6),
@@ -55,43 +55,43 @@ _TABLE1 = (
 )
 
 
-def table1_rows(track: Track) -> list[dict]:
-    """Rows of Table 1 of the paper, read from `track`.
+def table1_rows(passage: Passage) -> list[dict]:
+    """Rows of Table 1 of the paper, read from `passage`.
 
     Parameters
     ----------
-    track : Track
-        Usually ``Track.paper()``.
+    passage : Passage
+        Usually ``Passage.paper()``.
 
     Returns
     -------
     list of dict
         One dict per parameter with keys ``quantity``, ``symbol`` (LaTeX),
-        ``field`` (the `Track` attribute), ``value`` (in ``unit``), ``unit``
+        ``field`` (the `Track` or `Train` attribute), ``value`` (in ``unit``), ``unit``
         (engineering unit, e.g. "MN/m") and ``scale`` (SI value of one
-        ``unit``), so that ``value * scale == getattr(track, field)``.
+        ``unit``), so that ``value * scale == getattr(passage, field)``.
     """
     rows = []
     for quantity, symbol, field, unit, scale in _TABLE1:
-        si = float(getattr(track, field))
+        si = float(getattr(passage, field))
         rows.append(dict(quantity=quantity, symbol=symbol, field=field,
                          value=si / scale, unit=unit, scale=scale))
     return rows
 
 
-def table1(track: Track) -> str:
+def table1(passage: Passage) -> str:
     """Table 1 of the paper as a markdown table (quantity, symbol, value, unit).
 
     Parameters
     ----------
-    track : Track
+    passage : Passage
 
     Returns
     -------
     str
         Markdown; show it with ``IPython.display.Markdown``.
     """
-    rows = [(r["quantity"], r["symbol"], f"{r['value']:g}", r["unit"]) for r in table1_rows(track)]
+    rows = [(r["quantity"], r["symbol"], f"{r['value']:g}", r["unit"]) for r in table1_rows(passage)]
     return markdown_table(["Quantity", "Symbol", "Value", "Unit"], rows)
 
 
@@ -130,7 +130,7 @@ def foundation_table(linear: LinearFoundation, bilinear: BilinearFoundation,
     return markdown_table(["Law", "Eq.", "Symbol", "Value", "Unit"], rows)
 
 
-def derived_table(track: Track) -> str:
+def derived_table(passage: Passage) -> str:
     """Quantities derived from Table 1 that the book uses, as a markdown table.
 
     Period T = H/v, first harmonic 2 pi v / H, mean load per sleeper 2QL/H,
@@ -138,16 +138,16 @@ def derived_table(track: Track) -> str:
     omega* = v^2 sqrt(rho S / EI) where omega / v = k_b.
     """
     rows = [
-        ("Period of the load at one sleeper", r"$T = H/v$", f"{track.period:.4g}", "s"),
-        ("First harmonic", r"$\omega_1 = 2\pi v/H$", f"{track.fundamental_frequency:.4g}",
+        ("Period of the load at one sleeper", r"$T = H/v$", f"{passage.period:.4g}", "s"),
+        ("First harmonic", r"$\omega_1 = 2\pi v/H$", f"{passage.fundamental_frequency:.4g}",
          "rad/s"),
         ("Mean train load per sleeper", r"$2QL/H$",
-         f"{track.static_load_per_sleeper / 1e3:.4g}", "kN"),
+         f"{passage.static_load_per_sleeper / 1e3:.4g}", "kN"),
         ("Pad–sleeper frequency", r"$\omega_0 = \sqrt{k_1/M}$",
-         f"{np.sqrt(track.pad_natural_frequency_squared):.4g}", "rad/s"),
-        ("Pad damping rate", r"$\beta = \eta_1/M$", f"{track.pad_damping_rate:.5g}", "1/s"),
+         f"{np.sqrt(passage.pad_natural_frequency_squared):.4g}", "rad/s"),
+        ("Pad damping rate", r"$\beta = \eta_1/M$", f"{passage.pad_damping_rate:.5g}", "1/s"),
         ("Frequency where $\\omega/v = k_b$", r"$\omega^* = v^2\sqrt{\rho S/EI}$",
-         f"{critical_frequency(track):.4g}", "rad/s"),
+         f"{critical_frequency(passage):.4g}", "rad/s"),
     ]
     return markdown_table(["Quantity", "Symbol", "Value", "Unit"], rows)
 

@@ -18,7 +18,7 @@ from matplotlib.ticker import NullFormatter
 
 from ..solution import TruncationWarning
 from ..solve import solve
-from ..track import Track
+from ..passage import Passage
 from .style import new_figure
 from .tables import markdown_table
 
@@ -64,19 +64,19 @@ def _relative_error(solution, reference) -> float:
     return float(np.max(np.abs(solution.sleeper_displacement(t) - exact)) / np.max(np.abs(exact)))
 
 
-def truncation_study(track: Track, foundation, wagon_lengths, accuracy: float = 1e-3) -> TruncationStudy:
+def truncation_study(passage: Passage, foundation, wagon_lengths, accuracy: float = 1e-3) -> TruncationStudy:
     """Solve at m = 15, "auto" and a reference m for each wagon length H [m]."""
     rows = []
     for length in wagon_lengths:
-        case = track.replace(wagon_length=float(length))
+        case = passage.replace(wagon_length=float(length))
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", TruncationWarning)   # m = 15 is the point here
-            paper = solve(case, foundation, 15, strict=True)
-            auto = solve(case, foundation, accuracy=accuracy, strict=True)
+            paper = solve(case.track, case.train, foundation, 15, strict=True)
+            auto = solve(case.track, case.train, foundation, accuracy=accuracy, strict=True)
             m_ref = int(round(6 * case.wagon_length / case.sleeper_spacing))
             start = np.zeros(m_ref + 1, dtype=complex)
             start[: auto.harmonics + 1] = auto.coefficients[auto.harmonics :]
-            reference = solve(case, foundation, m_ref, initial=start, strict=True)
+            reference = solve(case.track, case.train, foundation, m_ref, initial=start, strict=True)
         rows.append((case.wagon_length / case.sleeper_spacing,
                      _relative_error(paper, reference), paper.truncation_error,
                      auto.harmonics, _relative_error(auto, reference), auto.truncation_error, m_ref))

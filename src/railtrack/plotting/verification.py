@@ -20,7 +20,7 @@ from typing import Sequence
 import numpy as np
 from matplotlib.figure import Figure
 
-from .. import BilinearFoundation, CubicFoundation, LinearFoundation, Track, solve
+from .. import BilinearFoundation, CubicFoundation, LinearFoundation, Passage, solve
 from ..timedomain import TimeDomainSolution, simulate_time_domain
 from .model import markdown_table
 from .style import DISPLACEMENT_LABEL, MM, TIME_LABEL, new_figure
@@ -90,14 +90,14 @@ class CaseComparison:
         return float(np.max(np.abs(record - np.array(lagged).T)) / np.max(np.abs(record)))
 
 
-def compare_case(track: Track, foundation, label: str = "", *, harmonics: int = 15,
+def compare_case(passage: Passage, foundation, label: str = "", *, harmonics: int = 15,
                  reference_harmonics: int = 200, iterations: int = 100,
                  elements_per_span: int = 8, steps_per_period: int = 2400) -> CaseComparison:
     """Solve one foundation by Newton (m and a large m), the fixed point and the FE model.
 
     Parameters
     ----------
-    track, foundation, label : Track, foundation object, str
+    passage, foundation, label : Passage, foundation object, str
     harmonics, reference_harmonics : int
         m of the Newton solutions (both to a relative residual of 1e-10).
     iterations : int
@@ -111,12 +111,12 @@ def compare_case(track: Track, foundation, label: str = "", *, harmonics: int = 
         The FE run is timed with `time.perf_counter` (``fe_seconds``).
     """
     start = time.perf_counter()
-    fe = simulate_time_domain(track, foundation, elements_per_span, steps_per_period)
+    fe = simulate_time_domain(passage.track, passage.train, foundation, elements_per_span, steps_per_period)
     seconds = time.perf_counter() - start
     solutions = {
-        "newton": solve(track, foundation, harmonics, tol=1e-10, strict=True),
-        "reference": solve(track, foundation, reference_harmonics, tol=1e-10, strict=True),
-        "paper": solve(track, foundation, harmonics, method="fixed-point",
+        "newton": solve(passage.track, passage.train, foundation, harmonics, tol=1e-10, strict=True),
+        "reference": solve(passage.track, passage.train, foundation, reference_harmonics, tol=1e-10, strict=True),
+        "paper": solve(passage.track, passage.train, foundation, harmonics, method="fixed-point",
                        max_iterations=iterations),
     }
     curves = {key: s.sleeper_displacement(fe.times) for key, s in solutions.items()}
@@ -127,8 +127,8 @@ def compare_case(track: Track, foundation, label: str = "", *, harmonics: int = 
 
 def fe_against_harmonics(case: CaseComparison, harmonics: Sequence[int]) -> np.ndarray:
     """max_t |w_FE(t) - w_Newton,m(t)| [m] for each m: is the FE or the series the less accurate?"""
-    track, law = case.fe.track, case.fe.foundation
-    return np.array([np.max(np.abs(case.curves["fe"] - solve(track, law, m, tol=1e-10, strict=True)
+    passage, law = case.fe.passage, case.fe.foundation
+    return np.array([np.max(np.abs(case.curves["fe"] - solve(passage.track, passage.train, law, m, tol=1e-10, strict=True)
                                    .sleeper_displacement(case.times))) for m in harmonics])
 
 
@@ -270,7 +270,7 @@ def observed_orders(sizes: Sequence[float], errors: Sequence[float]) -> np.ndarr
     return np.log(errors[:-1] / errors[1:]) / np.log(sizes[:-1] / sizes[1:])
 
 
-def convergence_study(track: Track, foundation: LinearFoundation, *,
+def convergence_study(passage: Passage, foundation: LinearFoundation, *,
                       elements: Sequence[int] = (1, 2, 4, 8),
                       steps: Sequence[int] = (600, 1200, 2400, 4800), fixed_steps: int = 4800,
                       fixed_elements: int = 8, reference_harmonics: int = 800) -> ConvergenceStudy:
@@ -279,16 +279,16 @@ def convergence_study(track: Track, foundation: LinearFoundation, *,
     The reference is eq. (23) with `reference_harmonics` harmonics; runs
     shared by both studies are made once.
     """
-    reference = solve(track, foundation, reference_harmonics, method="analytic")
+    reference = solve(passage.track, passage.train, foundation, reference_harmonics, method="analytic")
     runs = {}
 
     def error(e, s):
         if (e, s) not in runs:
-            fe = simulate_time_domain(track, foundation, e, s)
+            fe = simulate_time_domain(passage.track, passage.train, foundation, e, s)
             runs[e, s] = np.max(np.abs(fe.sleeper_displacement - reference.sleeper_displacement(fe.times)))
         return runs[e, s]
-    t = np.linspace(0.0, track.period, 2400, endpoint=False)
-    m200 = solve(track, foundation, 200, method="analytic").sleeper_displacement(t)
+    t = np.linspace(0.0, passage.period, 2400, endpoint=False)
+    m200 = solve(passage.track, passage.train, foundation, 200, method="analytic").sleeper_displacement(t)
     return ConvergenceStudy(
         tuple(elements), np.array([error(e, fixed_steps) for e in elements]), fixed_steps,
         tuple(steps), np.array([error(fixed_elements, s) for s in steps]), fixed_elements,
@@ -326,11 +326,11 @@ def plot_convergence(study: ConvergenceStudy) -> Figure:
     return fig
 
 
-def newton_solve_time(track: Track, foundation, harmonics: int = 15, repeats: int = 21) -> float:
+def newton_solve_time(passage: Passage, foundation, harmonics: int = 15, repeats: int = 21) -> float:
     """Median wall time of `solve(track, foundation, harmonics)` (Newton) over `repeats` calls [s]."""
     times = []
     for _ in range(repeats):
         start = time.perf_counter()
-        solve(track, foundation, harmonics)
+        solve(passage.track, passage.train, foundation, harmonics)
         times.append(time.perf_counter() - start)
     return float(np.median(times))
