@@ -140,6 +140,9 @@ def main() -> None:
         spent = median_time(lambda: rt.solve(track, vehicle, law, 60), 20)
         steps = rt.solve(track, vehicle, law, 60).iterations
         print(f"| {label} | {spent * 1e3:.2f} | {steps} | {spent * 1e3 / 60:.3f} |")
+    ratio = median_ratio(lambda: rt.solve(track, coach, law, 60),
+                         lambda: rt.solve(track, train, law, 60), 20)
+    print(f"| coach / wagon, timed back to back (median of {RATIO_RUNS}) | {ratio:.2f} | | |")
 
 
 if __name__ == "__main__":

@@ -10,6 +10,9 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.passage`    the train on the track, as the equations take it
 `railtrack.receptance` Section 2.1, eq. (3): the rail's receptance
 `railtrack.rail_field` eq. (3) at any offset x: the rail between sleepers
+`railtrack.moment`     the rail's bending moment: its kinks in closed form
+`railtrack.bowl`       the deflection bowl along the track
+`railtrack.ballast`    a ballast-subgrade support reduced to one layer
 `railtrack.sleeper`    Section 2.2, eqs. (4)–(8), (14): pad, coupling P
 `railtrack.load`       Section 2.3, eqs. (9)–(16): the load F
 `railtrack.harmonic_balance`  Section 3, eqs. (17)–(20): residual, AFT
@@ -21,6 +24,7 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.solve`      the entry point `solve`
 `railtrack.fem`        finite-element ring of the same track (check)
 `railtrack.timedomain` Newmark time integration of that ring (check)
+`railtrack.ring_outputs` the ring's moments and forces, from its nodal states
 `railtrack.timestep`   the time steps it needs and its time-step error
 `railtrack.runcost`    its memory and run time, estimated before it starts
 =====================  ==============================================
