@@ -22,11 +22,18 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.linear`     Section 4.1, eq. (23): analytic linear solution
 `railtrack.truncation` how many harmonics: the truncation error, m = "auto"
 `railtrack.solve`      the entry point `solve`
+`railtrack.batch`      Newton on a batch of systems at once
+`railtrack.sweep`      `sweep`: many solves over any field, at once
+`railtrack.continuation` `continuation`: a branch followed through its folds
+`railtrack.branch`     the `Branch` it returns, and its folds
 `railtrack.fem`        finite-element ring of the same track (check)
 `railtrack.timedomain` Newmark time integration of that ring (check)
 `railtrack.ring_outputs` the ring's moments and forces, from its nodal states
 `railtrack.timestep`   the time steps it needs and its time-step error
 `railtrack.runcost`    its memory and run time, estimated before it starts
+`railtrack.ring_state` the ring started from a harmonic-balance solution
+`railtrack.stability`  `check_stability`: does the ring stay on a solution?
+`railtrack.ramp`       `speed_ramp`: the ring through rising or falling speeds
 =====================  ==============================================
 
 SI units throughout.  w is positive upward (the train pushes it negative);
@@ -52,6 +59,11 @@ from .receptance import rail_receptance, rail_receptance_lattice_sum
 from .sleeper import rail_coupling
 from .solution import ConvergenceError, Solution, TruncationWarning
 from .solve import METHODS, solve
+from .sweep import Sweep, sweep
+from .continuation import continuation
+from .branch import Branch, Fold
+from .stability import StabilityCheck, check_stability
+from .ramp import SpeedRamp, speed_ramp
 from .newmark import NonFiniteLawError
 from .runcost import LongRunWarning
 from .timedomain import TimeDomainSolution, simulate_time_domain
@@ -74,6 +86,15 @@ __all__ = [
     "as_foundation",
     "solve",
     "METHODS",
+    "sweep",
+    "Sweep",
+    "continuation",
+    "Branch",
+    "Fold",
+    "check_stability",
+    "StabilityCheck",
+    "speed_ramp",
+    "SpeedRamp",
     "Solution",
     "ConvergenceError",
     "TruncationWarning",

@@ -95,8 +95,10 @@ class LinearFoundation:
         return self.stiffness * np.asarray(w) + self.damping * np.asarray(v)
 
     def tangent(self, w, v):
-        shape = np.broadcast(np.asarray(w), np.asarray(v)).shape
-        return np.full(shape, float(self.stiffness)), np.full(shape, float(self.damping))
+        shape = np.broadcast_shapes(np.shape(w), np.shape(v), np.shape(self.stiffness),
+                                    np.shape(self.damping))
+        return (np.broadcast_to(np.asarray(self.stiffness, dtype=float), shape),
+                np.broadcast_to(np.asarray(self.damping, dtype=float), shape))
 
     def linearization(self) -> tuple[float, float]:
         return float(self.stiffness), float(self.damping)
@@ -149,9 +151,10 @@ class BilinearFoundation:
         return self._stiffness(w) * np.asarray(w) + self.damping * np.asarray(v)
 
     def tangent(self, w, v):
-        shape = np.broadcast(np.asarray(w), np.asarray(v)).shape
-        stiffness = np.broadcast_to(self._stiffness(w), shape).astype(float)
-        return stiffness, np.full(shape, float(self.damping))
+        stiffness = np.asarray(self._stiffness(w), dtype=float)
+        shape = np.broadcast_shapes(stiffness.shape, np.shape(v), np.shape(self.damping))
+        return (np.broadcast_to(stiffness, shape),
+                np.broadcast_to(np.asarray(self.damping, dtype=float), shape))
 
     def linearization(self) -> tuple[float, float]:
         # The train compresses the foundation on average.
@@ -201,9 +204,10 @@ class CubicFoundation:
 
     def tangent(self, w, v):
         w = np.asarray(w)
-        shape = np.broadcast(w, np.asarray(v)).shape
         stiffness = self.stiffness + 3.0 * self.epsilon * self.cubic_stiffness * w * w
-        return np.broadcast_to(stiffness, shape), np.full(shape, float(self.damping))
+        shape = np.broadcast_shapes(np.shape(stiffness), np.shape(v), np.shape(self.damping))
+        return (np.broadcast_to(stiffness, shape),
+                np.broadcast_to(np.asarray(self.damping, dtype=float), shape))
 
     def linearization(self) -> tuple[float, float]:
         return float(self.stiffness), float(self.damping)

@@ -116,7 +116,7 @@ class HarmonicSystem:
 
     def load_norm(self) -> float:
         """Two-sided norm of F_n, the scale of the residual [m/s^2]."""
-        return float(np.sqrt(abs(self.load[0]) ** 2 + 2 * np.sum(np.abs(self.load[1:]) ** 2)))
+        return float(_two_sided_norm(self.load))
 
 
 def harmonic_system(
@@ -180,19 +180,25 @@ def require_jacobian_samples(samples: int, harmonics: int) -> None:
 
 
 def synthesize(system: HarmonicSystem, coefficients: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """w(t_j) and w'(t_j) on t_j = j T / N, j = 0..N-1, from c_0..c_m (eqs. 18, 19)."""
-    spectrum = np.zeros((2, system.samples // 2 + 1), dtype=complex)
-    spectrum[0, : system.harmonics + 1] = coefficients * system.samples
-    spectrum[1, : system.harmonics + 1] = spectrum[0, : system.harmonics + 1] * 1j * system.omega
-    w, v = np.fft.irfft(spectrum, system.samples)
+    """w(t_j) and w'(t_j) on t_j = j T / N, j = 0..N-1, from c_0..c_m (eqs. 18, 19).
+
+    Leading axes of `coefficients` are a batch (`railtrack.batch`): the
+    series is synthesised along the last axis.
+    """
+    coefficients = np.asarray(coefficients)
+    spectrum = np.zeros((2,) + coefficients.shape[:-1] + (system.samples // 2 + 1,), dtype=complex)
+    spectrum[0, ..., : system.harmonics + 1] = coefficients * system.samples
+    spectrum[1, ..., : system.harmonics + 1] = spectrum[0, ..., : system.harmonics + 1] * 1j * system.omega
+    w, v = np.fft.irfft(spectrum, system.samples, axis=-1)
     return w, v
 
 
-def _checked_force(system: HarmonicSystem, w: np.ndarray, v: np.ndarray) -> np.ndarray:
+def _checked_force(system: HarmonicSystem, w: np.ndarray, v: np.ndarray,
+                   strict: bool = True) -> np.ndarray:
     force = np.asarray(system.foundation.force(w, v), dtype=float)
     if force.shape != w.shape:
         force = np.broadcast_to(force, w.shape)
-    if not np.all(np.isfinite(force)):
+    if strict and not np.all(np.isfinite(force)):
         bad = int(np.flatnonzero(~np.isfinite(force))[0])
         raise NonFiniteForceError(
             f"the foundation law returned a non-finite force {force[bad]!r} at "
@@ -202,7 +208,8 @@ def _checked_force(system: HarmonicSystem, w: np.ndarray, v: np.ndarray) -> np.n
     return force
 
 
-def nonlinear_coefficients(system: HarmonicSystem, coefficients: np.ndarray) -> np.ndarray:
+def nonlinear_coefficients(system: HarmonicSystem, coefficients: np.ndarray,
+                           strict: bool = True) -> np.ndarray:
     """G_n = (1/T) int g(w, w') e^{-i omega_n t} dt for n = 0..m by AFT, eq. (20) [m/s^2].
 
     Parameters
@@ -211,45 +218,60 @@ def nonlinear_coefficients(system: HarmonicSystem, coefficients: np.ndarray) -> 
     coefficients : ndarray, shape (m+1,)
         c_0..c_m [m].
 
+    strict : bool
+        Raise `NonFiniteForceError` where the law is not finite (default);
+        False lets NaN through, for a batch to judge member by member.
+
     Returns
     -------
     ndarray, shape (m+1,)
         The harmonics of f(w, w') / M, exact up to aliasing (see `default_samples`).
     """
     w, v = synthesize(system, coefficients)
-    force = _checked_force(system, w, v)
-    spectrum = np.fft.rfft(force)[: system.harmonics + 1]
+    force = _checked_force(system, w, v, strict)
+    spectrum = np.fft.rfft(force, axis=-1)[..., : system.harmonics + 1]
     return spectrum / (system.samples * system.sleeper_mass)
 
 
-def residual(system: HarmonicSystem, coefficients: np.ndarray) -> np.ndarray:
-    """R_n(c) of eq. (17) for n = 0..m [m/s^2]; zero at a solution."""
+def residual(system: HarmonicSystem, coefficients: np.ndarray, strict: bool = True) -> np.ndarray:
+    """R_n(c) of eq. (17) for n = 0..m [m/s^2]; zero at a solution.
+
+    Leading axes of `coefficients` are a batch, matching a batched system.
+    """
     coefficients = np.asarray(coefficients, dtype=complex)
     return (
         system.operator * coefficients
-        + nonlinear_coefficients(system, coefficients)
+        + nonlinear_coefficients(system, coefficients, strict)
         + system.load
     )
 
 
-def residual_norm(system: HarmonicSystem, values: np.ndarray) -> float:
-    """Two-sided norm of R_n relative to that of F_n (the relative residual)."""
+def _two_sided_norm(values: np.ndarray) -> np.ndarray:
     values = np.asarray(values)
-    norm = np.sqrt(abs(values[0]) ** 2 + 2 * np.sum(np.abs(values[1:]) ** 2))
-    return float(norm / system.load_norm())
+    return np.sqrt(np.abs(values[..., 0]) ** 2 + 2 * np.sum(np.abs(values[..., 1:]) ** 2, axis=-1))
+
+
+def residual_norm(system: HarmonicSystem, values: np.ndarray) -> float:
+    """Two-sided norm of R_n relative to that of F_n (the relative residual).
+
+    For a batch, an array of one relative residual per member.
+    """
+    relative = _two_sided_norm(values) / _two_sided_norm(system.load)
+    return float(relative) if np.ndim(relative) == 0 else relative
 
 
 def to_real(coefficients: np.ndarray) -> np.ndarray:
-    """Pack c_0..c_m into ``[Re c_0, Re c_1..m, Im c_1..m]``."""
+    """Pack c_0..c_m into ``[Re c_0, Re c_1..m, Im c_1..m]`` (along the last axis)."""
     coefficients = np.asarray(coefficients, dtype=complex)
-    return np.concatenate([coefficients.real, coefficients[1:].imag])
+    return np.concatenate([coefficients.real, coefficients[..., 1:].imag], axis=-1)
 
 
 def from_real(x: np.ndarray) -> np.ndarray:
     """Inverse of `to_real`."""
-    m = (len(x) - 1) // 2
-    coefficients = np.asarray(x[: m + 1], dtype=complex)
-    coefficients[1:] += 1j * x[m + 1 :]
+    x = np.asarray(x)
+    m = (x.shape[-1] - 1) // 2
+    coefficients = np.array(x[..., : m + 1], dtype=complex)
+    coefficients[..., 1:] += 1j * x[..., m + 1 :]
     return coefficients
 
 
@@ -276,33 +298,40 @@ def residual_jacobian(system: HarmonicSystem, coefficients: np.ndarray) -> np.nd
     """
     m = system.harmonics
     require_jacobian_samples(system.samples, m)
+    coefficients = np.asarray(coefficients)
+    batch = coefficients.shape[:-1]
     w, v = synthesize(system, coefficients)
     _checked_force(system, w, v)
     stiffness, damping = system.foundation.tangent(w, v)
-    tangent = np.empty((2, system.samples))
+    tangent = np.empty((2,) + batch + (system.samples,))
     tangent[0], tangent[1] = stiffness, damping
-    spectrum = np.fft.rfft(tangent)[:, : 2 * m + 1] / (system.samples * system.sleeper_mass)
+    mass = np.asarray(system.sleeper_mass)
+    spectrum = np.fft.rfft(tangent, axis=-1)[..., : 2 * m + 1] / (system.samples * mass)
     # two-sided harmonics j = -2m..2m, stored at index j + 2m
-    full = np.concatenate([np.conj(spectrum[:, :0:-1]), spectrum], axis=1)
-    lag = _lags(m)  # (n - k) + 2m for n = 0..m, k = -m..m
-    omega_k = system.fundamental * np.arange(-m, m + 1)
-    block = full[0][lag] + 1j * omega_k * full[1][lag]  # dG_n / dc_k, (m+1, 2m+1)
-    positive, negative = block[:, m + 1 :], block[:, m - 1 :: -1]
-    by_real = np.concatenate([block[:, m : m + 1], positive + negative], axis=1)
-    by_imag = 1j * (positive - negative)
+    full = np.concatenate([np.conj(spectrum[..., :0:-1]), spectrum], axis=-1)
+    stiff, damp = full[0], full[1]
+    below, above = _lags(m)  # (n - k) + 2m and (n + k) + 2m for n = 0..m, k = 1..m
+    omega_k = (np.asarray(system.fundamental) * np.arange(1, m + 1))[..., None, :]
+    # dG_n/dc_k = K_{n-k} + i omega_k D_{n-k}; c_{-k} = conj(c_k) brings in K_{n+k} - i omega_k D_{n+k}
+    k_below, k_above, d_below, d_above = stiff[..., below], stiff[..., above], damp[..., below], damp[..., above]
+    by_real = np.empty(batch + (m + 1, m + 1), dtype=complex)
+    by_real[..., 0] = stiff[..., 2 * m: 3 * m + 1]                  # dG_n/dc_0 = K_n
+    by_real[..., 1:] = k_below + k_above + 1j * omega_k * (d_below - d_above)
+    by_imag = 1j * (k_below - k_above) - omega_k * (d_below + d_above)
     index = np.arange(m + 1)
-    by_real[index, index] += system.operator
-    by_imag[index[1:], index[1:] - 1] += 1j * system.operator[1:]
-    jacobian = np.empty((2 * m + 1, 2 * m + 1))
-    jacobian[: m + 1, : m + 1] = by_real.real
-    jacobian[: m + 1, m + 1 :] = by_imag.real
-    jacobian[m + 1 :, : m + 1] = by_real[1:].imag
-    jacobian[m + 1 :, m + 1 :] = by_imag[1:].imag
+    operator = np.broadcast_to(system.operator, batch + (m + 1,))
+    by_real[..., index, index] += operator
+    by_imag[..., index[1:], index[1:] - 1] += 1j * operator[..., 1:]
+    jacobian = np.empty(batch + (2 * m + 1, 2 * m + 1))
+    jacobian[..., : m + 1, : m + 1] = by_real.real
+    jacobian[..., : m + 1, m + 1 :] = by_imag.real
+    jacobian[..., m + 1 :, : m + 1] = by_real[..., 1:, :].imag
+    jacobian[..., m + 1 :, m + 1 :] = by_imag[..., 1:, :].imag
     return jacobian
 
 
 @lru_cache(maxsize=32)
-def _lags(harmonics: int) -> np.ndarray:
+def _lags(harmonics: int) -> tuple[np.ndarray, np.ndarray]:
     n = np.arange(harmonics + 1)[:, None]
-    k = np.arange(-harmonics, harmonics + 1)[None, :]
-    return n - k + 2 * harmonics
+    k = np.arange(1, harmonics + 1)[None, :]
+    return n - k + 2 * harmonics, n + k + 2 * harmonics

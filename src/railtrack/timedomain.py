@@ -14,24 +14,30 @@ high-frequency rail modes it leaves undamped carry almost no motion at the
 sleepers, and the pad dashpots damp those that do, so the sleeper response
 settles to its period without numerical dissipation (see the tests).
 
+Besides the static state, a run may start from a harmonic-balance solution
+or from an explicit ring state (`railtrack.ring_state`): that is how
+`railtrack.stability` asks whether the track stays on a periodic solution,
+and how `railtrack.ramp.speed_ramp` carries a steady state from speed
+to speed.
+
 The steps themselves are in `railtrack.newmark`.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-import scipy.sparse.linalg as spla
 
 from .fem import ring_mesh, sleepers_on_ring, wheel_load_entries
 from .ring_outputs import ring_outputs, watched_dofs
+from .ring_state import initial_state
 from .foundations import as_foundation
-from .newmark import NewmarkStepper, NonFiniteLawError, instability_hint, reference_law, static_state
+from .newmark import NewmarkStepper, NonFiniteLawError, instability_hint, reference_law
 from .runcost import LongRunWarning, check_run_cost
 from .timestep import TimeStepWarning, check_step_error, check_steps_per_period
 from .passage import Passage
+from .td_solution import TimeDomainSolution
 from .track import Track
 from .train import Train
 
@@ -46,63 +52,6 @@ __all__ = [
 
 GROWTH_LIMIT = 1e4
 """A sleeper deflection this many times the static one means the track is unstable."""
-
-
-@dataclass(frozen=True, eq=False)
-class TimeDomainSolution:
-    """Periodic steady response of the FE ring found by `simulate_time_domain`.
-
-    Attributes
-    ----------
-    times : ndarray, shape (steps_per_period,)
-        One period, t = 0, dt, ..., T - dt [s]; t = 0 when a wagon's first axle is
-        above sleeper 0.
-    sleeper_displacement : ndarray, shape (steps_per_period,)
-        w(t) of sleeper 0 over the last period [m], positive upward.
-    rail_displacement : ndarray, shape (steps_per_period,)
-        Rail deflection above sleeper 0 over the last period [m].
-    sleeper_displacements : ndarray, shape (steps_per_period, n_sleepers)
-        All sleepers over the last period [m]; in the steady state sleeper i
-        lags sleeper 0 by i L / v.
-    rail_displacement_midspan, bending_moment_above_sleeper, bending_moment_midspan,
-    rail_seat_load, foundation_force : ndarray, shape (steps_per_period,)
-        Over the last period: rail at x = L / 2 [m]; EI w'' at x = 0 and
-        L / 2, sagging positive [N m]; pad force on sleeper 0 and force on
-        its foundation, positive in compression [N] (`railtrack.ring_outputs`).
-    periods : int
-        Periods integrated.
-    converged : bool
-        Whether the last period's sleeper-0 response differed from the one
-        before by at most ``tol`` times its peak.
-    period_change : ndarray, shape (periods - 1,)
-        max |w_k - w_{k-1}| / max |w_k| between consecutive periods k [-].
-    elements_per_span : int
-    steps_per_period : int
-    passage : Passage
-    foundation : object
-    step_error : float
-        Estimated time-step error, max |w - w_exact| of sleeper 0 over its
-        peak [-] (`railtrack.timestep.estimate_step_error`, for the track
-        linearized about its static state); NaN if not estimated.
-    """
-
-    times: np.ndarray
-    sleeper_displacement: np.ndarray
-    rail_displacement: np.ndarray
-    sleeper_displacements: np.ndarray
-    periods: int
-    converged: bool
-    period_change: np.ndarray
-    elements_per_span: int
-    steps_per_period: int
-    passage: Passage | None = None
-    foundation: Any = None
-    step_error: float = float("nan")
-    rail_displacement_midspan: np.ndarray | None = None
-    bending_moment_above_sleeper: np.ndarray | None = None
-    bending_moment_midspan: np.ndarray | None = None
-    rail_seat_load: np.ndarray | None = None
-    foundation_force: np.ndarray | None = None
 
 
 _FINITE = (
@@ -132,7 +81,8 @@ def simulate_time_domain(
     *,
     tol: float = 1e-6,
     max_periods: int = 40,
-    start: str = "static",
+    start: Any = "static",
+    min_periods: int = 1,
     newton_tol: float = 1e-11,
     max_newton_iterations: int = 50,
     warn_step_error: float | None = 1e-3,
@@ -173,10 +123,19 @@ def simulate_time_domain(
         state counts as periodic [-].
     max_periods : int
         Periods integrated at most; ``converged=False`` if `tol` is not met.
-    start : {"static", "rest"}
+    start : {"static", "rest"}, Solution or (u, v)
         Initial state: static equilibrium with the wheels at their t = 0
-        positions (zero velocity), or the undeformed track at rest with the
-        wheels suddenly applied.
+        positions (zero velocity); the undeformed track at rest with the
+        wheels suddenly applied; a harmonic-balance `railtrack.Solution` of
+        this track and speed (its state at t = 0,
+        `railtrack.ring_state.ring_state_from_solution`; the train may be n
+        of the solution's wagons tiled); or the ring's displacements and
+        velocities, two arrays of shape (n_dofs,) such as a previous run's
+        ``final_state``.  The acceleration is the one the equation of motion
+        gives.
+    min_periods : int
+        Periods integrated at least, even if the response repeats earlier
+        (`railtrack.stability` watches a solution for a while).
     newton_tol : float
         Newton stops when the sleeper equations hold to newton_tol times the
         mean static sleeper deflection [-].
@@ -223,14 +182,13 @@ def simulate_time_domain(
     elements_per_span = _require_count("elements_per_span", elements_per_span)
     steps_per_period = _require_count("steps_per_period", steps_per_period)
     max_periods = _require_count("max_periods", max_periods)
+    min_periods = min(_require_count("min_periods", min_periods), max_periods)
     max_newton_iterations = _require_count("max_newton_iterations", max_newton_iterations)
     for name, value in (("tol", tol), ("newton_tol", newton_tol)):
         if not np.isfinite(value) or value <= 0:
             raise ValueError(f"{name} must be a finite number > 0; got {value!r}")
     if warn_step_error is not None and not (np.isfinite(warn_step_error) and warn_step_error > 0):
         raise ValueError(f"warn_step_error must be a finite number > 0 or None; got {warn_step_error!r}")
-    if start not in ("static", "rest"):
-        raise ValueError(f"start must be 'static' or 'rest'; got {start!r}")
     check_run_cost(sleepers_on_ring(passage), elements_per_span, steps_per_period, max_periods)
     check_steps_per_period(passage, steps_per_period)
     foundation = as_foundation(foundation)
@@ -245,23 +203,11 @@ def simulate_time_domain(
     scale = float(passage.static_load_per_sleeper) * (1.0 / k0 + 1.0 / float(passage.pad_stiffness))
     newton_abs = newton_tol * scale
 
-    load = np.zeros(mesh.n_dofs)
-    np.add.at(load, loads[0][0], loads[1][0])
-    v = np.zeros(mesh.n_dofs)
-    if start == "static":
-        try:
-            u = static_state(mesh, foundation, k0, load, newton_abs, max_newton_iterations)
-        except NonFiniteLawError as error:
-            raise NonFiniteLawError(f"{error}, in the static state with the wheels at t = 0{_FINITE}") from None
-        except RuntimeError as error:
-            raise RuntimeError(f"{error}, in the static state with the wheels at t = 0") from None
-        a = np.zeros(mesh.n_dofs)
-        linearized_at = float(np.mean(u[mesh.sleeper_dofs]))
-    else:
-        # The wheels are put on the track at rest: it starts accelerating.
-        u = np.zeros(mesh.n_dofs)
-        a = spla.splu(mesh.mass.tocsc()).solve(load)
-        linearized_at = 0.0
+    try:
+        u, v, a = initial_state(mesh, foundation, start, k0, newton_abs, max_newton_iterations)
+    except NonFiniteLawError as error:
+        raise NonFiniteLawError(f"{error}{_FINITE}") from None
+    linearized_at = float(np.mean(u[mesh.sleeper_dofs]))
     step_error = check_step_error(passage, foundation, linearized_at, steps_per_period,
                                   elements_per_span, warn_step_error)
     stepper = NewmarkStepper(mesh, foundation, reference, dt, loads, newton_abs, max_newton_iterations)
@@ -272,6 +218,7 @@ def simulate_time_domain(
     rail = np.empty(n_steps)
     watched = watched_dofs(mesh)
     states, rates = np.empty((n_steps, watched.size)), np.empty((n_steps, watched.size))
+    history = np.empty((max_periods, n_steps))
     previous: np.ndarray | None = None
     changes: list[float] = []
     converged = False
@@ -296,12 +243,13 @@ def simulate_time_domain(
                     f"|w| = {reached:.3g} m, {reached / scale:.3g} times the static deflection scale "
                     f"{scale:.3g} m, {_when(passage, n_steps, n, periods)}; {instability_hint(foundation)}"
                 )
-        current = record[:, 0].copy()
+        history[periods - 1] = record[:, 0]
+        current = history[periods - 1]
         if previous is not None:
             peak = max(float(np.max(np.abs(current))), np.finfo(float).tiny)
             changes.append(float(np.max(np.abs(current - previous))) / peak)
-            if changes[-1] <= tol:
-                converged = True
+            converged = changes[-1] <= tol
+            if converged and periods >= min_periods:
                 break
         previous = current
 
@@ -319,4 +267,6 @@ def simulate_time_domain(
         foundation=foundation,
         step_error=step_error,
         **ring_outputs(mesh, foundation, states, rates),
+        sleeper_history=history[:periods].copy(),
+        final_state=(u.copy(), v.copy()),
     )
