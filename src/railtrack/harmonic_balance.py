@@ -19,7 +19,6 @@ with respect to the 2m + 1 real unknowns ``[Re c_0, Re c_1..m, Im c_1..m]``.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 
 import numpy as np
 
@@ -310,10 +309,10 @@ def residual_jacobian(system: HarmonicSystem, coefficients: np.ndarray) -> np.nd
     # two-sided harmonics j = -2m..2m, stored at index j + 2m
     full = np.concatenate([np.conj(spectrum[..., :0:-1]), spectrum], axis=-1)
     stiff, damp = full[0], full[1]
-    below, above = _lags(m)  # (n - k) + 2m and (n + k) + 2m for n = 0..m, k = 1..m
     omega_k = (np.asarray(system.fundamental) * np.arange(1, m + 1))[..., None, :]
-    # dG_n/dc_k = K_{n-k} + i omega_k D_{n-k}; c_{-k} = conj(c_k) brings in K_{n+k} - i omega_k D_{n+k}
-    k_below, k_above, d_below, d_above = stiff[..., below], stiff[..., above], damp[..., below], damp[..., above]
+    # dG_n/dc_k = K_{n-k} + i omega_k D_{n-k}; c_{-k} = conj(c_k) brings in K_{n+k} - i omega_k D_{n+k}.
+    # Both are Toeplitz in (n, k): windows of the harmonics, taken as views, not gathered.
+    k_below, k_above, d_below, d_above = (part for values in (stiff, damp) for part in _lagged(values, m))
     by_real = np.empty(batch + (m + 1, m + 1), dtype=complex)
     by_real[..., 0] = stiff[..., 2 * m: 3 * m + 1]                  # dG_n/dc_0 = K_n
     by_real[..., 1:] = k_below + k_above + 1j * omega_k * (d_below - d_above)
@@ -330,8 +329,7 @@ def residual_jacobian(system: HarmonicSystem, coefficients: np.ndarray) -> np.nd
     return jacobian
 
 
-@lru_cache(maxsize=32)
-def _lags(harmonics: int) -> tuple[np.ndarray, np.ndarray]:
-    n = np.arange(harmonics + 1)[:, None]
-    k = np.arange(1, harmonics + 1)[None, :]
-    return n - k + 2 * harmonics, n + k + 2 * harmonics
+def _lagged(harmonics: np.ndarray, m: int) -> tuple[np.ndarray, np.ndarray]:
+    """X_{n-k} and X_{n+k} for n = 0..m, k = 1..m, from X_j stored at j + 2m (views)."""
+    windows = np.lib.stride_tricks.sliding_window_view(harmonics, m, axis=-1)
+    return windows[..., m : 2 * m + 1, ::-1], windows[..., 2 * m + 1 : 3 * m + 2, :]
