@@ -1,0 +1,61 @@
+"""railtrack.plotting.speed: critical speeds, peak finding, halved spacing, figures.
+
+Oracles: the Winkler formula by hand; the smeared track with a vanishing
+sleeper mass tends to it; a parabola's vertex is found exactly; halving the
+spacing keeps every per-metre value; the linear law's peak on a lightly
+damped track lies within 5 % above the smeared prediction.
+"""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import dataclasses  # noqa: E402
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import railtrack as rt  # noqa: E402
+from railtrack.plotting import speed as sp  # noqa: E402
+
+LIGHT = rt.Track.paper(pad_damping=30e3), rt.LinearFoundation(20e6, 20e3)
+
+
+def test_winkler_critical_speed_by_hand():
+    k = 220e6 * 20e6 / 240e6 / 0.6
+    assert sp.winkler_critical_speed(*LIGHT) == pytest.approx((4 * k * 6.3e6 / 60.0 ** 2) ** 0.25, rel=1e-14)
+    assert sp.lower_branch_bound(*LIGHT) == pytest.approx(np.sqrt(240e6 / 100.0), rel=1e-14)
+
+
+def test_smeared_speed_tends_to_winkler_without_sleeper_mass():
+    track, law = LIGHT
+    light = dataclasses.replace(track, sleeper_mass=1e-4)
+    assert sp.smeared_critical_speed(light, law) == pytest.approx(sp.winkler_critical_speed(light, law), rel=1e-3)
+    assert sp.smeared_critical_speed(track, law) < 0.6 * sp.winkler_critical_speed(track, law)
+
+
+def test_peak_speed_finds_a_parabola_vertex_between_grid_points():
+    v = np.linspace(0.0, 10.0, 11)
+    speed, lowest = sp.peak_speed(v, (v - 4.3) ** 2 - 1.0)
+    assert speed == pytest.approx(4.3, abs=1e-12) and lowest == pytest.approx(0.09 - 1.0)
+
+
+def test_halved_spacing_keeps_per_metre_values():
+    track, law = sp.halved_spacing(*LIGHT)
+    for field in ("sleeper_mass", "pad_stiffness", "pad_damping"):
+        assert getattr(track, field) / track.sleeper_spacing == pytest.approx(getattr(LIGHT[0], field) / 0.6)
+    assert law.stiffness / track.sleeper_spacing == pytest.approx(20e6 / 0.6)
+    assert law.damping / track.sleeper_spacing == pytest.approx(20e3 / 0.6)
+
+
+def test_linear_peak_sits_just_above_the_smeared_prediction_and_plots():
+    speeds = np.linspace(200.0, 500.0, 301)
+    curves = sp.lowest_over_speed({"light": LIGHT}, rt.Train.paper(), speeds)
+    v_peak, _ = sp.peak_speed(speeds, curves["light"])
+    assert 1.0 < v_peak / sp.smeared_critical_speed(*LIGHT) < 1.05
+    fig = sp.plot_speed_curves(speeds, curves, marks={"smeared": sp.smeared_critical_speed(*LIGHT)})
+    assert [line.get_gid() for line in fig.axes[0].lines][0] == "light"
+    fig2 = sp.plot_seat_load_histogram(np.random.default_rng(0).normal(0.37, 0.01, 500))
+    assert len(fig2.axes[0].get_legend().get_texts()) == 3
+    plt.close("all")
