@@ -51,7 +51,8 @@ def member(value, index: int):
     for field in dataclasses.fields(value):
         item = getattr(value, field.name)
         if isinstance(item, np.ndarray) and item.ndim > 0:
-            changes[field.name] = float(np.asarray(item).reshape(-1)[index]) if item.size > 1 else float(item.reshape(-1)[0])
+            flat = item.reshape(-1)
+            changes[field.name] = float(flat[index] if flat.size > 1 else flat[0])
     return dataclasses.replace(value, **changes) if changes else value
 
 
@@ -136,7 +137,9 @@ def newton_batch(system: HarmonicSystem, size: int, max_iterations: int = 100, t
         if not active.any():
             break
         index = np.flatnonzero(active)
-        jacobian = residual_jacobian_of(system, c, index)
+        rows = _rows(system, index)          # once per step: the line search reuses it
+        with np.errstate(invalid="ignore", over="ignore"):
+            jacobian = residual_jacobian(rows, c[index])
         step = from_real(_steps(jacobian, -to_real(current[index])))
         step[:, 0] = step[:, 0].real
         scale = np.ones(len(index))
@@ -144,8 +147,8 @@ def newton_batch(system: HarmonicSystem, size: int, max_iterations: int = 100, t
         for _ in range(30):
             trial = c[index] + scale[:, None] * step
             with np.errstate(invalid="ignore", over="ignore"):
-                trial_residual = residual_of(system, trial, index)
-                trial_norm = np.asarray(residual_norm_of(system, trial_residual, index), dtype=float)
+                trial_residual = residual(rows, trial, strict=False)
+                trial_norm = np.asarray(residual_norm(rows, trial_residual), dtype=float)
             better = pending & np.isfinite(trial_norm) & (trial_norm < norm[index])
             accepted = index[better]
             c[accepted], current[accepted], norm[accepted] = trial[better], trial_residual[better], trial_norm[better]
@@ -176,15 +179,3 @@ def _rows(system: HarmonicSystem, index: np.ndarray) -> HarmonicSystem:
                                omega=take(system.omega), coupling=take(system.coupling),
                                load=take(system.load), operator=take(system.operator))
 
-
-def residual_of(system, coefficients, index):
-    return residual(_rows(system, index), coefficients, strict=False)
-
-
-def residual_norm_of(system, values, index):
-    return residual_norm(_rows(system, index), values)
-
-
-def residual_jacobian_of(system, coefficients, index):
-    with np.errstate(invalid="ignore", over="ignore"):
-        return residual_jacobian(_rows(system, index), coefficients[index])

@@ -14,7 +14,7 @@ where ``k_b^4 = rho S omega^2 / EI``, ``a = k_b L`` and ``q = omega L / v``.
 Written this way eta_E, and the quantities built from it, are 0/0 or inf/inf
 at omega = 0 and where ``a = q``.  This module therefore factors eq. (3)
 into pieces that stay finite and accurate everywhere (see
-`receptance_factors`); `railtrack.sleeper` and `railtrack.train` combine
+`receptance_factors`); `railtrack.sleeper` and `railtrack.load` combine
 them into P_n, Gamma and F_n without ever dividing by zero.
 """
 

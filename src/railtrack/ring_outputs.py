@@ -74,7 +74,7 @@ def ring_outputs(mesh: RingMesh, foundation, displacements: np.ndarray,
         ``foundation_force`` [N].
     """
     watched = watched_dofs(mesh)
-    dof = column = {int(d): i for i, d in enumerate(watched)}
+    dof = {int(d): i for i, d in enumerate(watched)}
     n, h = mesh.n_nodes, mesh.element_length
     ei = float(mesh.passage.rail_bending_stiffness)
     element, xi = _nodes(mesh)
@@ -86,7 +86,7 @@ def ring_outputs(mesh: RingMesh, foundation, displacements: np.ndarray,
         moment_mid = _node_moment(u, dof, element, n, h, ei)
     else:
         moment_mid = ei * (nodal @ _curvature_weights(xi, h))
-    sleeper = column[int(mesh.sleeper_dofs[0])]
+    sleeper = dof[int(mesh.sleeper_dofs[0])]
     w, w_rate = u[:, sleeper], v[:, sleeper]
     compression = w - u[:, dof[0]]
     compression_rate = w_rate - v[:, dof[0]]
