@@ -94,6 +94,16 @@ def batch_guess(system: HarmonicSystem, size: int) -> np.ndarray:
     return guess
 
 
+CHUNK = 512
+"""Members whose Jacobians are assembled and solved together in a Newton step.
+
+A stack of B Jacobians (77 MB for B = 10,000 at m = 15) is written to main
+memory by the assembly and read back by the LU; a few hundred (4 MB) stay
+in cache in between.  The steps are the same, bit for bit: each member's
+LU is its own.  (Measured at m = 15: 128 to 1024 are equally good.)
+"""
+
+
 def _steps(jacobian: np.ndarray, right: np.ndarray) -> np.ndarray:
     """Solve the stack J x = right; a singular member takes a least-squares step."""
     try:
@@ -106,6 +116,20 @@ def _steps(jacobian: np.ndarray, right: np.ndarray) -> np.ndarray:
             except np.linalg.LinAlgError:
                 steps[i] = np.linalg.lstsq(jacobian[i], right[i], rcond=None)[0]
         return steps
+
+
+def _newton_steps(rows: HarmonicSystem, c: np.ndarray, current: np.ndarray) -> np.ndarray:
+    """The full Newton step -J^{-1} R of every member of `rows`, `CHUNK` members at a time."""
+    size = len(c)
+    step = np.empty_like(current)
+    for start in range(0, size, CHUNK):
+        part = slice(start, min(start + CHUNK, size))
+        chunk = rows if size <= CHUNK else _rows(rows, np.arange(part.start, part.stop))
+        with np.errstate(invalid="ignore", over="ignore"):
+            jacobian = residual_jacobian(chunk, c[part])
+        step[part] = from_real(_steps(jacobian, -to_real(current[part])))
+    step[:, 0] = step[:, 0].real
+    return step
 
 
 def newton_batch(system: HarmonicSystem, size: int, max_iterations: int = 100, tol: float = 1e-10,
@@ -137,11 +161,9 @@ def newton_batch(system: HarmonicSystem, size: int, max_iterations: int = 100, t
         if not active.any():
             break
         index = np.flatnonzero(active)
-        rows = _rows(system, index)          # once per step: the line search reuses it
-        with np.errstate(invalid="ignore", over="ignore"):
-            jacobian = residual_jacobian(rows, c[index])
-        step = from_real(_steps(jacobian, -to_real(current[index])))
-        step[:, 0] = step[:, 0].real
+        # once per step: the line search reuses it (no copy while all are active)
+        rows = system if len(index) == size else _rows(system, index)
+        step = _newton_steps(rows, c[index], current[index])
         scale = np.ones(len(index))
         pending = np.ones(len(index), dtype=bool)
         for _ in range(30):

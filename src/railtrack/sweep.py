@@ -192,7 +192,10 @@ def sweep(track: Track, train: Train, foundation, harmonics: int = 15, *, tol: f
 def _extremes(system, coefficients: np.ndarray, size: int) -> dict:
     """Extremes over a period of w, the rail-seat load and the foundation force."""
     m = system.harmonics
-    omega = np.broadcast_to(system.omega, (size, m + 1))
+    # omega is (m+1,) unless the passage is swept: seat_load_coefficients is
+    # elementwise, so it evaluates the rail's factors once per harmonic, not
+    # once per member and harmonic, and broadcasts them over the batch.
+    omega = system.omega
     spectrum = np.zeros((3, size, GRID // 2 + 1), dtype=complex)
     spectrum[0, :, : m + 1] = coefficients * GRID
     spectrum[1, :, : m + 1] = 1j * omega * coefficients * GRID
