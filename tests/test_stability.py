@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from railtrack import CubicFoundation, LinearFoundation, Passage, Track, Train, solve
+from railtrack import CubicFoundation, LinearFoundation, Passage, Track, Train, continuation, solve
 from railtrack.fem import ring_mesh
 from railtrack.ramp import speed_ramp
 from railtrack.ring_state import ring_state_from_solution
@@ -182,6 +182,8 @@ def test_speed_ramp_shows_two_stable_states_at_900():
     down = speed_ramp(SOFT, TRAIN, CUBIC, [900.0, 850.0, 800.0, 750.0], 4, 600, max_periods=150)
     np.testing.assert_allclose(1e3 * down.minimum, [-0.837, -0.759, -0.797, -1.707], atol=3e-3)
     assert down.converged.tolist() == [True, True, True, False]
+    # the periodic speeds have no lines between the multiples of v/H; 750 m/s has
+    assert (down.interharmonic_fraction[:3] < 1e-2).all() and down.interharmonic_fraction[3] > 0.1
     guess = None
     for speed in np.arange(400.0, 901.0, 25.0):   # natural continuation, as measured
         large = solve(SOFT, TRAIN.replace(speed=speed), CUBIC, harmonics=120, initial=guess)
@@ -189,3 +191,29 @@ def test_speed_ramp_shows_two_stable_states_at_900():
     assert large.converged and abs(1e3 * _minimum(large) + 1.877) < 2e-3
     up = speed_ramp(SOFT, TRAIN, CUBIC, [900.0], 4, 600, max_periods=150, start=large)
     assert up.converged[0] and abs(1e3 * up.minimum[0] + 1.877) < 5e-3
+
+
+@pytest.mark.slow
+def test_a_slow_instability_is_caught_before_the_distance_shows_it():
+    # Above the last fold of the issue-9 branch, 605 m/s lies past a torus
+    # bifurcation: watched 100 periods, the ring leaves the solution (the
+    # truth); after 20 periods its distance has hardly grown (6.0e-4 to
+    # 6.8e-4 of the peak, measured), but its period-to-period change has.
+    branch = continuation(SOFT, TRAIN.replace(speed=300.0), CUBIC, "speed", start=300.0,
+                          stop=700.0, harmonics=25)
+
+    def on_last_part(speed):
+        return solve(SOFT, TRAIN.replace(speed=speed), CUBIC, harmonics=25,
+                     initial=branch.solutions_at(speed)[-1])
+
+    solution = on_last_part(605.0)
+    long = check_stability(solution, periods=100, max_periods=100, elements_per_span=4,
+                           steps_per_period=600)
+    assert long.distance.max() > 1e-2 and not long.stable
+    short = check_stability(solution, periods=20, max_periods=40, elements_per_span=4,
+                            steps_per_period=600)
+    assert short.distance[:20].max() < 1e-3
+    assert short.verdict in ("grows", "not periodic") and short.change_growth > 1.03
+    # a stable point of the same part is still called stable
+    assert check_stability(on_last_part(560.0), periods=20, max_periods=40, elements_per_span=4,
+                           steps_per_period=600).verdict == "stays"

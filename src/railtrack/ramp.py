@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .spectrum import record_spectrum
 from .timedomain import simulate_time_domain
 from .track import Track
 from .train import Train
@@ -44,6 +45,11 @@ class SpeedRamp:
         Whether the response repeated within `tol` at that speed.
     periods : ndarray of int, shape (S,)
         Periods integrated at that speed.
+    interharmonic_fraction : ndarray, shape (S,)
+        `railtrack.stability.Spectrum.interharmonic_fraction` of sleeper 0
+        over the last half of the periods run at that speed [-]: near 0 for a
+        periodic response or a dying transient; lines between the multiples
+        of v / H (a quasi-periodic response) make it large.
     final_state : (ndarray, ndarray)
         The ring's state after the last speed, to continue the ramp.
     """
@@ -53,7 +59,18 @@ class SpeedRamp:
     maximum: np.ndarray
     converged: np.ndarray
     periods: np.ndarray
+    interharmonic_fraction: np.ndarray
     final_state: tuple[np.ndarray, np.ndarray]
+
+
+def _interharmonic(result) -> float:
+    """Interharmonic fraction of sleeper 0 over the last half of a run (0 for < 4 periods)."""
+    history = result.sleeper_history
+    if history.shape[0] < 4:
+        return 0.0
+    # the fraction compares lines, so the period's value (here 1) does not matter
+    return record_spectrum(history[history.shape[0] // 2:].ravel(), 1.0,
+                           history.shape[1]).interharmonic_fraction
 
 
 def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span: int = 8,
@@ -107,5 +124,6 @@ def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span
         maximum=np.array([float(r.sleeper_displacements.max()) for r in results]),
         converged=np.array([r.converged for r in results]),
         periods=np.array([r.periods for r in results]),
+        interharmonic_fraction=np.array([_interharmonic(r) for r in results]),
         final_state=state,
     )
