@@ -16,6 +16,7 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.sleeper`    Section 2.2, eqs. (4)–(8), (14): pad, coupling P
 `railtrack.load`       Section 2.3, eqs. (9)–(16): the load F
 `railtrack.harmonic_balance`  Section 3, eqs. (17)–(20): residual, AFT
+`railtrack.aft_jacobian`      the exact Jacobian of that residual
 `railtrack.fixed_point`       eq. (21): the paper's iteration
 `railtrack.newton`     Newton's method on eq. (17)
 `railtrack.foundations`  eqs. (22), (24), (25): foundation laws
@@ -32,7 +33,9 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.timestep`   the time steps it needs and its time-step error
 `railtrack.runcost`    its memory and run time, estimated before it starts
 `railtrack.ring_state` the ring started from a harmonic-balance solution
+`railtrack.spectrum`   the spectrum of a record: periodic or not?
 `railtrack.stability`  `check_stability`: does the ring stay on a solution?
+`railtrack.branch_stability` `check_branch`: the same along a branch, sampled
 `railtrack.ramp`       `speed_ramp`: the ring through rising or falling speeds
 =====================  ==============================================
 
@@ -63,6 +66,7 @@ from .sweep import Sweep, sweep
 from .continuation import continuation
 from .branch import Branch, Fold
 from .stability import StabilityCheck, check_stability
+from .branch_stability import check_branch
 from .ramp import SpeedRamp, speed_ramp
 from .newmark import NonFiniteLawError
 from .runcost import LongRunWarning
@@ -93,6 +97,7 @@ __all__ = [
     "Fold",
     "check_stability",
     "StabilityCheck",
+    "check_branch",
     "speed_ramp",
     "SpeedRamp",
     "Solution",

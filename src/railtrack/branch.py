@@ -123,8 +123,11 @@ class Branch:
     message : str
         Why the continuation stopped, in words.
     stable : ndarray of bool or None
-        Stability of each point; None until a stability check fills it
-        (``dataclasses.replace(branch, stable=...)``).
+        Stability of each point; None until `railtrack.check_branch` fills it
+        from the time-domain ring's verdicts on a sample of the points.
+    checks : dict or None
+        Point index -> `railtrack.StabilityCheck` of each point the ring was
+        run on (`railtrack.check_branch`); None until then.
     track, train, foundation : the problem at the start
     harmonics : int
         m.
@@ -161,6 +164,7 @@ class Branch:
     coefficient_scale: float
     parameter_scale: float
     stable: np.ndarray | None = None
+    checks: dict | None = None
 
     def __len__(self) -> int:
         return len(self.values)
