@@ -59,3 +59,38 @@ def test_linear_peak_sits_just_above_the_smeared_prediction_and_plots():
     fig2 = sp.plot_seat_load_histogram(np.random.default_rng(0).normal(0.37, 0.01, 500))
     assert len(fig2.axes[0].get_legend().get_texts()) == 3
     plt.close("all")
+
+
+@pytest.fixture(scope="module")
+def fold_branch():
+    return rt.continuation(rt.Track.paper(pad_damping=1e5), rt.Train.paper(speed=300.0),
+                           rt.CubicFoundation(20e6, 2e13, 0.8, 5000.0), "speed", start=300.0,
+                           stop=600.0, harmonics=25)
+
+
+def test_branch_dips_at_a_speed_are_those_of_polished_solves(fold_branch):
+    dips, before = sp.branch_dips_at(fold_branch, 525.0)
+    assert len(dips) == 5 and np.all(np.diff(before) > 0)
+    track, train, law = fold_branch.problem(0)
+    for c, dip in zip(fold_branch.solutions_at(525.0), dips):
+        polished = rt.solve(track, train.replace(speed=525.0), law, harmonics=25, initial=c)
+        t = np.linspace(0.0, polished.period, 512, endpoint=False)
+        assert polished.converged and abs(polished.sleeper_displacement(t).min() - dip) < 2e-5
+
+
+def test_a_ramp_state_is_matched_to_its_crossing_and_the_branch_plots_its_stability(fold_branch):
+    dips, before = sp.branch_dips_at(fold_branch, 525.0)
+    ramp = rt.SpeedRamp(np.array([525.0, 525.0]), np.array([dips[3] + 1e-7, np.nan]),
+                        np.zeros(2), np.array([True, False]), np.array([30, 80]), np.zeros(2),
+                        (np.zeros(1), np.zeros(1)))
+    assert sp.ramp_on_branch(ramp, fold_branch)[0][0] == before[3]
+    assert sp.ramp_on_branch(ramp, fold_branch)[1] is None
+    stable = np.arange(len(fold_branch)) < 50
+    marked = dataclasses.replace(fold_branch, stable=stable, checks={10: None, 80: None})
+    fig = sp.plot_branch(marked, ramps={"rising": ramp})
+    lines = {line.get_gid(): line for line in fig.axes[0].lines}
+    solid = np.isfinite(lines["branch-stable"].get_ydata()).sum()
+    dotted = np.isfinite(lines["branch-unstable"].get_ydata()).sum()
+    assert (solid, dotted) == (51, len(fold_branch) - 50)   # they share the point at the change
+    assert len(lines["checked"].get_xdata()) == 2 and "ramp-0" in lines
+    plt.close("all")

@@ -16,11 +16,12 @@ import dataclasses
 import numpy as np
 from matplotlib.figure import Figure
 
+from ..solve import solve
 from .style import MM, new_figure
 
 __all__ = ["lowest_over_speed", "peak_speed", "winkler_critical_speed", "lower_branch_bound",
-           "smeared_critical_speed", "halved_spacing", "solution_counts", "plot_speed_curves",
-           "plot_branch", "plot_seat_load_histogram"]
+           "smeared_critical_speed", "halved_spacing", "solution_counts", "branch_dips_at",
+           "ramp_on_branch", "plot_speed_curves", "plot_branch", "plot_seat_load_histogram"]
 
 
 def lowest_over_speed(cases: dict, train, speeds) -> dict:
@@ -154,6 +155,48 @@ def solution_counts(branch, speeds) -> np.ndarray:
     return np.array([len(branch.solutions_at(float(v))) for v in np.atleast_1d(speeds)])
 
 
+def branch_dips_at(branch, speed: float) -> tuple[np.ndarray, np.ndarray]:
+    """Where the branch crosses `speed`: (min w there [m], index of the point before), one per crossing.
+
+    min w is interpolated linearly between the two points of each crossing.
+    """
+    dip = branch.minimum_displacement()
+    offset = np.asarray(branch.values) - speed
+    before = np.flatnonzero((offset[:-1] == 0) | (offset[:-1] * offset[1:] < 0))
+    weight = offset[before] / (offset[before] - offset[before + 1])
+    return dip[before] + weight * (dip[before + 1] - dip[before]), before
+
+
+def ramp_on_branch(ramp, branch, samples: int = 4096) -> list[tuple[int, float] | None]:
+    """For each speed of a ramp, the branch point its steady state lies on.
+
+    The branch's crossings of each speed are polished by `railtrack.solve`
+    (`Branch.solutions_at` as starting points), and the ring's least sleeper
+    displacement is compared with theirs.
+
+    Returns, per speed, None where the ring found no periodic state, else
+    (index of the branch point just before the nearest crossing, |min w of
+    the ring - min w of that solution| [m]).
+    """
+    out = []
+    track, train, foundation = branch.problem(0)
+    for speed, low, periodic in zip(ramp.speeds, ramp.minimum, ramp.converged):
+        if not periodic:
+            out.append(None)
+            continue
+        _, before = branch_dips_at(branch, float(speed))
+        at = train.replace(speed=float(speed))
+        dips = []
+        for guess in branch.solutions_at(float(speed)):
+            s = solve(track, at, foundation, harmonics=branch.harmonics, initial=guess)
+            t = np.linspace(0.0, float(s.period), samples, endpoint=False)
+            dips.append(float(s.sleeper_displacement(t).min()) if s.converged else np.nan)
+        gaps = np.abs(np.array(dips) - low)
+        k = int(np.nanargmin(gaps))
+        out.append((int(before[k]), float(gaps[k])))
+    return out
+
+
 def plot_speed_curves(speeds, curves: dict, *, marks: dict | None = None,
                       title: str | None = None) -> Figure:
     """-min w [mm] over speed [m/s], one line per case, peaks dotted.
@@ -186,8 +229,12 @@ def plot_speed_curves(speeds, curves: dict, *, marks: dict | None = None,
     return fig
 
 
-def plot_branch(branch, *, linear: tuple | None = None) -> Figure:
+def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = None) -> Figure:
     """-min w [mm] along a speed branch, its folds marked, optionally the linear law's curve.
+
+    Where ``branch.stable`` is set (`railtrack.check_branch`), stable parts
+    are drawn solid and unstable parts dotted, and the points the ring was
+    run on are marked.
 
     Parameters
     ----------
@@ -195,10 +242,25 @@ def plot_branch(branch, *, linear: tuple | None = None) -> Figure:
         From ``continuation(..., parameter="speed")``.
     linear : (speeds, lowest), optional
         The linear law's min w [m] over speeds [m/s] for comparison.
+    ramps : dict, optional
+        Label -> `railtrack.SpeedRamp`: the ring's steady dips along rising or
+        falling speeds, joined in the order run; a cross where the response
+        did not repeat (its dip over the last period run).
     """
     fig, ax = new_figure()
     dip = -branch.minimum_displacement() * MM
-    ax.plot(branch.values, dip, "-", lw=1.5, label="cubic law, continued branch", gid="branch")
+    if branch.stable is None:
+        ax.plot(branch.values, dip, "-", lw=1.5, label="cubic law, continued branch", gid="branch")
+    else:
+        for flag, style, label in ((True, "-", "stable"), (False, ":", "unstable")):
+            drawn = branch.stable == flag
+            drawn[1:] |= drawn[:-1].copy()   # one point on, so that the pieces meet
+            shown = np.where(drawn, dip, np.nan)
+            ax.plot(branch.values, shown, style, color="C0", lw=1.5,
+                    label=f"branch, {label} (ring)", gid=f"branch-{label}")
+        checked = np.array(sorted(branch.checks))
+        ax.plot(branch.values[checked], dip[checked], "o", mfc="none", color="C0", ms=5,
+                label="checked by the ring", gid="checked")
     indices = [fold.index for fold in branch.folds]
     ax.plot(branch.values[indices], dip[indices], "rv", ms=6, label="folds", gid="folds")
     for n, i in enumerate(indices, 1):
@@ -207,6 +269,14 @@ def plot_branch(branch, *, linear: tuple | None = None) -> Figure:
     if linear is not None:
         ax.plot(linear[0], -np.asarray(linear[1]) * MM, "--", color="0.4",
                 label="linear law (same k2, η2)", gid="linear")
+    for n, (label, ramp) in enumerate((ramps or {}).items()):
+        ramp_dip, periodic = -ramp.minimum * MM, np.asarray(ramp.converged)
+        ax.plot(ramp.speeds, ramp_dip, "-", color=f"C{n + 1}", lw=0.8, alpha=0.8)
+        ax.plot(ramp.speeds[periodic], ramp_dip[periodic], "^v<>"[n % 4], color=f"C{n + 1}",
+                ms=5, label=label, gid=f"ramp-{n}")
+        if not periodic.all():
+            ax.plot(ramp.speeds[~periodic], ramp_dip[~periodic], "x", color=f"C{n + 1}", ms=6,
+                    label=f"{label}: no periodic state (last period)", gid=f"ramp-{n}-aperiodic")
     ax.set_xlabel("train speed v [m/s]")
     ax.set_ylabel("largest sleeper dip −min w [mm]")
     ax.grid(True, alpha=0.3)
