@@ -120,3 +120,7 @@ def test_the_bending_moment_is_accurate_at_the_automatic_harmonics(train):
     plain = TRACK.rail_bending_stiffness * fourier_series(
         rail_field_coefficients(auto.passage, omega, auto.coefficients, [0.0])[1][0], omega, t)
     assert plain.max() < 0.9 * ring.bending_moment_above_sleeper.max()
+    np.testing.assert_allclose(auto.rail_bending_moment(t, 0.0, kinks="series"), plain,
+                               rtol=0, atol=1e-9 * np.abs(plain).max())
+    with pytest.raises(ValueError, match="kinks"):
+        auto.rail_bending_moment(t, 0.0, kinks="exact")

@@ -173,21 +173,27 @@ class Solution:
             return values + np.zeros(np.shape(x))
         return self._rail_field(t, x, 0)
 
-    def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
+    def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
+                            kinks: str = "closed form") -> np.ndarray:
         """Bending moment of the rail EI d^2 w_r / dx^2 at (x, t) [N m].
 
         Positive when sagging (the rail concave upward, as under a wheel),
         since w is positive upward.  `t` and `x` as in `rail_displacement`.
-        Under a wheel the moment has a kink in time; the kinks are summed in
-        closed form (`railtrack.moment`), so that the series converges as
-        fast as the displacement's.  At ``harmonics="auto"`` the moment of
-        the paper's wagon and of a four-axle coach is within 0.3 % of its
-        peak of an 800-harmonic sum, and its peak within 0.3 % of the
-        time-domain ring's (tests/test_forces.py); the plain series would be
-        10 to 20 % low there.
+        Under a wheel the moment has a kink in time; by default the kinks are
+        summed in closed form (`railtrack.moment`), so that the series
+        converges as fast as the displacement's.  At ``harmonics="auto"`` the
+        moment of the paper's wagon and of a four-axle coach is within 0.3 %
+        of its peak of an 800-harmonic sum, and its peak within 0.3 % of the
+        time-domain ring's (tests/test_forces.py).  ``kinks="series"`` gives
+        the plain truncated Fourier series instead, for comparison: it
+        converges like 1/m at the kinks.
         """
         ei = self.passage.rail_bending_stiffness
-        return ei * self._rail_field(t, x, 1) + kink_sum(self.passage, t, x)
+        if kinks == "closed form":
+            return ei * self._rail_field(t, x, 1) + kink_sum(self.passage, t, x)
+        if kinks == "series":
+            return ei * self._rail_field(t, x, 2)
+        raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
 
     def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
         """Pad force on the sleeper, positive in compression [N], eq. (5).
@@ -202,12 +208,12 @@ class Solution:
             seat_load_coefficients(self.passage, omega, self.coefficients), omega, t)
 
     def _rail_field(self, t: ArrayLike, x: ArrayLike, which: int) -> np.ndarray:
-        """Re sum_n r_n(x) e^{i omega_n t}: displacement (0), or curvature less its kinks (1)."""
+        """Re sum_n r_n(x) e^{i omega_n t}: displacement (0), curvature less its kinks (1), curvature (2)."""
         t, x = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(x, dtype=float))
         xs, x_index = np.unique(x, return_inverse=True)
         ts, t_index = np.unique(t, return_inverse=True)
         omega = self.frequencies
-        coefficients = rail_field_coefficients(self.passage, omega, self.coefficients, xs)[which]
+        coefficients = rail_field_coefficients(self.passage, omega, self.coefficients, xs)[min(which, 1)]
         if which == 1:
             ei = self.passage.rail_bending_stiffness
             coefficients = coefficients - kink_coefficients(self.passage, omega, xs) / ei
