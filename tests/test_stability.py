@@ -217,3 +217,20 @@ def test_a_slow_instability_is_caught_before_the_distance_shows_it():
     # a stable point of the same part is still called stable
     assert check_stability(on_last_part(560.0), periods=20, max_periods=40, elements_per_span=4,
                            steps_per_period=600).verdict == "stays"
+
+
+@pytest.mark.slow
+def test_below_the_last_fold_the_falling_ramp_finds_no_periodic_state():
+    # Chapter 10's falling ramp leaves the small branch at the last fold
+    # (513.1 m/s) and, within its 80 periods per speed, settles on nothing
+    # down to 495 m/s.  Watched 300 periods at 510 m/s the response still
+    # does not repeat, and most of its spectrum lies between the multiples
+    # of v/H: not a slow transient (measured: 500 periods, fraction 0.68).
+    branch = continuation(SOFT, TRAIN.replace(speed=300.0), CUBIC, "speed", start=300.0,
+                          stop=560.0, harmonics=25)
+    small = solve(SOFT, TRAIN.replace(speed=520.0), CUBIC, harmonics=25,
+                  initial=branch.solutions_at(520.0)[-1])
+    ramp = speed_ramp(SOFT, TRAIN, CUBIC, [520.0, 514.0, 510.0], 4, 600, tol=1e-5,
+                      max_periods=300, start=small)
+    assert ramp.converged.tolist() == [True, True, False]
+    assert ramp.periods[-1] == 300 and ramp.interharmonic_fraction[-1] > 0.5

@@ -108,8 +108,8 @@ def check_branch(branch: Branch, per_segment: int = 2, *, locate: bool = True,
     if isinstance(per_segment, bool) or not isinstance(per_segment, (int, np.integer)) \
             or per_segment < 1:
         raise ValueError(f"per_segment must be an integer >= 1; got {per_segment!r}")
-    if confirm is not None and (isinstance(confirm, bool) or not isinstance(confirm, (int, np.integer))
-                                or confirm < 2):
+    whole = not isinstance(confirm, bool) and isinstance(confirm, (int, np.integer))
+    if confirm is not None and not (whole and confirm >= 2):
         raise ValueError(f"confirm must be None or an integer >= 2 (periods); got {confirm!r}")
     if not np.all(branch.converged):
         bad = np.flatnonzero(~np.asarray(branch.converged))
