@@ -9,3 +9,21 @@
 Each function returns a `matplotlib.figure.Figure` and uses SI inside,
 showing millimetres and seconds on the axes.
 """
+
+
+def _sharp_notebook_figures() -> None:
+    """In a notebook, embed figures at twice their pixel density ("retina").
+
+    They keep their size on the page but stay sharp when a projector or a
+    high-density screen enlarges them.  Outside IPython nothing changes.
+    """
+    try:
+        from IPython import get_ipython
+        from matplotlib_inline.backend_inline import set_matplotlib_formats
+    except ImportError:
+        return
+    if get_ipython() is not None:
+        set_matplotlib_formats("retina")
+
+
+_sharp_notebook_figures()
