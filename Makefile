@@ -1,7 +1,11 @@
 # Build, test and benchmark the railtrack book and package.
 #
 #   make book    build the HTML book (every notebook re-executed) into _build/html
-#   make test    pytest over tests/, then nbval over every notebook under book/
+#   make test    pytest over tests/, nbval over every notebook under book/, then the
+#                book built from the notebooks' stored outputs with Sphinx warnings as
+#                errors, and the student edition checked for leaked solutions
+#   make book-student  the book without solutions, into _build/student/_build/html
+#   make lab     JupyterLab on the book's notebooks with the project's kernel
 #   make bench   run benchmarks/bench.py
 #   make clean   remove _build
 #
@@ -29,7 +33,8 @@ MATHJAX_DIR := book/_static/mathjax
 MATHJAX     := $(MATHJAX_DIR)/tex-mml-svg.js
 
 SANITIZE    := tests/nbval_sanitize.cfg
-NB_TIMEOUT  := 120
+# Seconds per cell, as execute.timeout in _config.yml.
+NB_TIMEOUT  := 300
 
 # The kernel must be the venv's Python, whatever kernelspecs the user has.
 export PATH := $(CURDIR)/$(VENV)/bin:$(PATH)
@@ -37,11 +42,13 @@ export JUPYTER_PREFER_ENV_PATH := 1
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 unexport VIRTUAL_ENV PYTHONPATH PYTHONHOME
 
-.PHONY: help venv book test bench clean distclean
+.PHONY: help venv book book-student lab test bench clean distclean
 
 help:
 	@echo "make book   - build the HTML book into _build/html (re-executes every notebook)"
-	@echo "make test   - pytest over tests/ and nbval over book/**/*.ipynb"
+	@echo "make test   - pytest over tests/, nbval over book/**/*.ipynb, the rendered book's checks"
+	@echo "make book-student - the book without solutions, into _build/student"
+	@echo "make lab    - JupyterLab on the notebooks (http://127.0.0.1:$(LAB_PORT)/lab)"
 	@echo "make bench  - run benchmarks/bench.py"
 	@echo "make clean  - remove _build (make distclean also removes .venv and MathJax)"
 
@@ -72,9 +79,26 @@ book: $(STAMP) $(MATHJAX)
 	@echo
 	@echo "The book is at $(CURDIR)/_build/html/index.html"
 
-# Both steps always run; the target fails if either fails.  nbval compares
+# The editions built from the notebooks' stored outputs (tools/editions.py):
+# seconds instead of minutes, since nothing is executed.
+STORED      := _build/stored
+STUDENT     := _build/student
+LAB_PORT    ?= 8888
+
+book-student: $(STAMP) $(MATHJAX)
+	$(PY) tools/editions.py student $(STUDENT)-src
+	$(VENV)/bin/jupyter-book build $(STUDENT)-src -W -n --keep-going --path-output $(STUDENT)
+	$(PY) tools/editions.py check-student $(STUDENT)/_build/html
+	@echo "The student edition is at $(CURDIR)/$(STUDENT)/_build/html/index.html"
+
+# JupyterLab on this machine only (127.0.0.1), the venv's kernel; Ctrl-C stops it.
+lab: $(STAMP)
+	$(VENV)/bin/jupyter lab --ServerApp.ip=127.0.0.1 --ServerApp.port=$(LAB_PORT) \
+	  --ServerApp.root_dir=$(CURDIR)/book --no-browser
+
+# Every step always runs; the target fails if any fails.  nbval compares
 # the stored outputs of every notebook under book/ with a fresh run.
-test: $(STAMP)
+test: $(STAMP) $(MATHJAX)
 	@status=0; \
 	notebooks=$$(find book -name '*.ipynb' -not -path '*/.ipynb_checkpoints/*' -not -path '*/_build/*' | sort); \
 	if [ -z "$$notebooks" ]; then echo "== nbval: no notebooks under book/ yet, nothing to compare"; fi; \
@@ -85,6 +109,15 @@ test: $(STAMP)
 	  $(PY) -m pytest --nbval --nbval-current-env --nbval-sanitize-with $(SANITIZE) \
 	    --nbval-cell-timeout=$(NB_TIMEOUT) $$notebooks || status=1; \
 	fi; \
+	echo "== the book from its stored outputs, Sphinx warnings and broken references as errors"; \
+	{ $(PY) tools/editions.py stored $(STORED)-src && \
+	  $(VENV)/bin/jupyter-book build $(STORED)-src -W -n --keep-going --path-output $(STORED) \
+	    > $(STORED)-build.log 2>&1; } || { tail -n 40 $(STORED)-build.log; status=1; }; \
+	echo "== the student edition: no solution may reach it"; \
+	{ $(PY) tools/editions.py student $(STUDENT)-src && \
+	  $(VENV)/bin/jupyter-book build $(STUDENT)-src -W -n --keep-going --path-output $(STUDENT) \
+	    > $(STUDENT)-build.log 2>&1 && \
+	  $(PY) tools/editions.py check-student $(STUDENT)/_build/html; } || status=1; \
 	if [ $$status -ne 0 ]; then echo "make test: FAILED" >&2; fi; \
 	exit $$status
 

@@ -1,0 +1,131 @@
+"""Editions of the book built from the notebooks' stored outputs.
+
+`make book` executes every notebook; these editions do not: they copy the
+book's sources into a folder of their own and set the copy's configuration
+to build from the outputs stored in the notebooks, which `make test`
+(nbval) keeps equal to a fresh run.  That takes seconds, not minutes.
+
+- ``stored``: the whole book, as `make test` builds it to find Sphinx
+  warnings and broken references and to test the rendered pages.
+- ``student``: the book without its solutions.  Every cell of a solution
+  (its text, its code and the hidden checks of its answer) carries the
+  notebook tag ``solution``; the student edition drops those cells, and
+  ``check-student`` reads its built HTML and fails if any solution text,
+  printed line or figure reached it.
+
+    python tools/editions.py stored TARGET
+    python tools/editions.py student TARGET
+    python tools/editions.py check-student HTML_DIR
+"""
+
+from __future__ import annotations
+
+import base64
+import hashlib
+import html as entities
+import json
+import re
+import shutil
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+TAG = "solution"
+MARKER = re.compile(r"Solution to Exercise")
+
+
+def is_solution(cell: dict) -> bool:
+    """Whether a notebook cell belongs to a solution (tagged ``solution``)."""
+    return TAG in cell.get("metadata", {}).get("tags", [])
+
+
+def strip_solutions(notebook: dict) -> dict:
+    """A copy of the notebook without its solution cells."""
+    stripped = dict(notebook)
+    stripped["cells"] = [cell for cell in notebook["cells"] if not is_solution(cell)]
+    return stripped
+
+
+def solution_traces(notebook: dict) -> tuple[list[str], set[str]]:
+    """What a solution would leave in a page: its printed lines and its figures' hashes.
+
+    Lines shorter than 12 characters (a bare number, a blank) and lines with
+    fewer than six letters or digits (a table's rule) are left out: they may
+    occur anywhere in the book.
+    """
+    lines, images = [], set()
+    for cell in notebook["cells"]:
+        if not is_solution(cell):
+            continue
+        for output in cell.get("outputs", []):
+            text = output.get("text") or output.get("data", {}).get("text/markdown") or ""
+            text = "".join(text) if isinstance(text, list) else text
+            lines += [line.strip() for line in text.splitlines()
+                      if len(line.strip()) >= 12 and len(re.findall(r"[A-Za-z0-9]", line)) >= 6]
+            png = output.get("data", {}).get("image/png")
+            if png:
+                images.add(hashlib.sha256(base64.b64decode("".join(png))).hexdigest())
+    return lines, images
+
+
+def write_sources(target: Path, student: bool) -> list[Path]:
+    """Copy the book's sources to `target` (without solutions if `student`); return the notebooks."""
+    if target.exists():
+        shutil.rmtree(target)
+    shutil.copytree(ROOT / "book", target / "book",
+                    ignore=shutil.ignore_patterns("*.ipynb", ".ipynb_checkpoints"))
+    shutil.copy(ROOT / "_toc.yml", target / "_toc.yml")
+    config = (ROOT / "_config.yml").read_text()
+    config, count = re.subn(r"execute_notebooks: \w+", "execute_notebooks: \"off\"", config)
+    assert count == 1, "_config.yml must set execute_notebooks once"
+    if student:
+        config = re.sub(r'^title: "(.*)"$', r'title: "\1 (student edition)"', config, count=1,
+                        flags=re.M)
+    (target / "_config.yml").write_text(config)
+    written = []
+    for source in sorted((ROOT / "book").glob("*.ipynb")):
+        notebook = json.loads(source.read_text())
+        notebook = strip_solutions(notebook) if student else notebook
+        path = target / "book" / source.name
+        path.write_text(json.dumps(notebook, indent=1, ensure_ascii=False) + "\n")
+        written.append(path)
+    return written
+
+
+def check_build(html: Path) -> list[str]:
+    """Every trace of a solution found in the built pages, as messages (empty: none)."""
+    pages = {path: entities.unescape(path.read_text(errors="replace"))
+             for path in html.rglob("*.html")}
+    images = {hashlib.sha256(path.read_bytes()).hexdigest(): path
+              for path in html.rglob("*.png")}
+    found = [f"{path.relative_to(html)}: 'Solution to Exercise'"
+             for path, text in pages.items() if MARKER.search(text)]
+    for source in sorted((ROOT / "book").glob("*.ipynb")):
+        lines, figures = solution_traces(json.loads(source.read_text()))
+        page = html / "book" / (source.stem + ".html")
+        text = pages.get(page, "")
+        found += [f"{page.name}: printed by a solution: {line!r}" for line in lines
+                  if line in text]
+        found += [f"{images[h].relative_to(html)}: a figure of a solution of {source.name}"
+                  for h in figures if h in images]
+    return found
+
+
+def main(argv: list[str]) -> int:
+    if len(argv) != 3 or argv[1] not in ("stored", "student", "check-student"):
+        print(__doc__, file=sys.stderr)
+        return 2
+    if argv[1] != "check-student":
+        written = write_sources(Path(argv[2]), student=argv[1] == "student")
+        kind = "without solutions" if argv[1] == "student" else "with their stored outputs"
+        print(f"{argv[1]} edition: {len(written)} notebooks {kind} in {argv[2]}")
+        return 0
+    found = check_build(Path(argv[2]))
+    for message in found:
+        print(f"solution leaked: {message}", file=sys.stderr)
+    print(f"student edition: {'no' if not found else len(found)} solution traces in {argv[2]}")
+    return 1 if found else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
