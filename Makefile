@@ -3,7 +3,8 @@
 #   make book    build the HTML book (every notebook re-executed) into _build/html
 #   make test    pytest over tests/, nbval over every notebook under book/, then the
 #                book built from the notebooks' stored outputs with Sphinx warnings as
-#                errors, and the student edition checked for leaked solutions
+#                errors, every page of it opened in headless Chromium (screenshots in
+#                _build/screenshots), and the student edition checked for leaked solutions
 #   make book-student  the book without solutions, into _build/student/_build/html
 #   make lab     JupyterLab on the book's notebooks with the project's kernel
 #   make bench   run benchmarks/bench.py
@@ -87,7 +88,7 @@ LAB_PORT    ?= 8888
 
 book-student: $(STAMP) $(MATHJAX)
 	$(PY) tools/editions.py student $(STUDENT)-src
-	$(VENV)/bin/jupyter-book build $(STUDENT)-src -W -n --keep-going --path-output $(STUDENT)
+	$(VENV)/bin/jupyter-book build $(STUDENT)-src --all -W -n --keep-going --path-output $(STUDENT)
 	$(PY) tools/editions.py check-student $(STUDENT)/_build/html
 	@echo "The student edition is at $(CURDIR)/$(STUDENT)/_build/html/index.html"
 
@@ -111,11 +112,13 @@ test: $(STAMP) $(MATHJAX)
 	fi; \
 	echo "== the book from its stored outputs, Sphinx warnings and broken references as errors"; \
 	{ $(PY) tools/editions.py stored $(STORED)-src && \
-	  $(VENV)/bin/jupyter-book build $(STORED)-src -W -n --keep-going --path-output $(STORED) \
+	  $(VENV)/bin/jupyter-book build $(STORED)-src --all -W -n --keep-going --path-output $(STORED) \
 	    > $(STORED)-build.log 2>&1; } || { tail -n 40 $(STORED)-build.log; status=1; }; \
+	echo "== headless Chromium on every page of that build (tests/rendered)"; \
+	$(PY) -m pytest -q tests/rendered/test_pages.py --book-html $(STORED)/_build/html || status=1; \
 	echo "== the student edition: no solution may reach it"; \
 	{ $(PY) tools/editions.py student $(STUDENT)-src && \
-	  $(VENV)/bin/jupyter-book build $(STUDENT)-src -W -n --keep-going --path-output $(STUDENT) \
+	  $(VENV)/bin/jupyter-book build $(STUDENT)-src --all -W -n --keep-going --path-output $(STUDENT) \
 	    > $(STUDENT)-build.log 2>&1 && \
 	  $(PY) tools/editions.py check-student $(STUDENT)/_build/html; } || status=1; \
 	if [ $$status -ne 0 ]; then echo "make test: FAILED" >&2; fi; \

@@ -37,6 +37,7 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.stability`  `check_stability`: does the ring stay on a solution?
 `railtrack.branch_stability` `check_branch`: the same along a branch, sampled
 `railtrack.ramp`       `speed_ramp`: the ring through rising or falling speeds
+`railtrack.explorer`   `explore`: sliders for the classroom (JupyterLab)
 =====================  ==============================================
 
 SI units throughout.  w is positive upward (the train pushes it negative);
@@ -76,6 +77,18 @@ from .load import axle_factor, load_coefficients
 from .passage import Passage
 from .track import Track
 from .train import Train
+
+
+def explore(**initial):
+    """The classroom explorer: sliders redrawing the response (`railtrack.explorer`).
+
+    Imported on call, so that ``import railtrack`` does not load matplotlib
+    and ipywidgets.
+    """
+    from .explorer import explore as _explore
+
+    return _explore(**initial)
+
 
 __version__ = "0.1.0"
 
@@ -118,4 +131,5 @@ __all__ = [
     "LongRunWarning",
     "NonFiniteLawError",
     "estimate_step_error",
+    "explore",
 ]
