@@ -93,9 +93,14 @@ book-student: $(STAMP) $(MATHJAX)
 	@echo "The student edition is at $(CURDIR)/$(STUDENT)/_build/html/index.html"
 
 # JupyterLab on this machine only (127.0.0.1), the venv's kernel; Ctrl-C stops it.
+# Offline: no extension manager asking PyPI, no news, no update check.
+# (--allow-root only where make runs as root, as in a container.)
 lab: $(STAMP)
 	$(VENV)/bin/jupyter lab --ServerApp.ip=127.0.0.1 --ServerApp.port=$(LAB_PORT) \
-	  --ServerApp.root_dir=$(CURDIR)/book --no-browser
+	  --ServerApp.root_dir=$(CURDIR)/book --no-browser \
+	  --LabApp.extension_manager=readonly --LabApp.news_url=None \
+	  --LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate \
+	  $(if $(filter 0,$(shell id -u)),--allow-root)
 
 # Every step always runs; the target fails if any fails.  nbval compares
 # the stored outputs of every notebook under book/ with a fresh run.
