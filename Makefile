@@ -1,11 +1,14 @@
 # Build, test and benchmark the railtrack book and package.
 #
 #   make book    build the HTML book (every notebook re-executed) into _build/html
-#   make test    pytest over tests/, nbval over every notebook under book/, then the
+#   make test    ruff on the notebooks, pytest over tests/ and nbval over every notebook
+#                under book/ (on every core), then the
 #                book built from the notebooks' stored outputs with Sphinx warnings as
 #                errors, every page of it opened in headless Chromium (screenshots in
 #                _build/screenshots), and the student edition checked for leaked solutions
 #   make book-student  the book without solutions, into _build/student/_build/html
+#   make pdf     the book as PDF, solutions in an appendix, and the student edition's
+#                PDF, into _build/pdf (headless Chromium prints a single-page build)
 #   make lab     JupyterLab on the book's notebooks with the project's kernel
 #   make bench   run benchmarks/bench.py
 #   make clean   remove _build
@@ -43,12 +46,13 @@ export JUPYTER_PREFER_ENV_PATH := 1
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 unexport VIRTUAL_ENV PYTHONPATH PYTHONHOME
 
-.PHONY: help venv book book-student lab test bench clean distclean
+.PHONY: help venv book book-student pdf lab test bench clean distclean
 
 help:
 	@echo "make book   - build the HTML book into _build/html (re-executes every notebook)"
 	@echo "make test   - pytest over tests/, nbval over book/**/*.ipynb, the rendered book's checks"
 	@echo "make book-student - the book without solutions, into _build/student"
+	@echo "make pdf    - the book and its student edition as PDF, into _build/pdf"
 	@echo "make lab    - JupyterLab on the notebooks (http://127.0.0.1:$(LAB_PORT)/lab)"
 	@echo "make bench  - run benchmarks/bench.py"
 	@echo "make clean  - remove _build (make distclean also removes .venv and MathJax)"
@@ -92,6 +96,25 @@ book-student: $(STAMP) $(MATHJAX)
 	$(PY) tools/editions.py check-student $(STUDENT)/_build/html
 	@echo "The student edition is at $(CURDIR)/$(STUDENT)/_build/html/index.html"
 
+# The PDFs: each edition built from the stored outputs on one page (Sphinx's
+# singlehtml builder) and printed by headless Chromium (tools/print_pdf.py
+# says why this route and not LaTeX).  About a minute for both.
+PDF         := _build/pdf
+
+pdf: $(STAMP) $(MATHJAX)
+	$(PY) tools/editions.py appendix $(PDF)/book-src
+	$(VENV)/bin/jupyter-book build $(PDF)/book-src --all -W -n --keep-going \
+	  --builder singlehtml --path-output $(PDF)/book > $(PDF)/book-build.log 2>&1 || \
+	  { tail -n 40 $(PDF)/book-build.log; exit 1; }
+	$(PY) tools/print_pdf.py $(PDF)/book/_build/singlehtml $(PDF)/railtrack-book.pdf
+	$(PY) tools/editions.py student $(PDF)/student-src
+	$(VENV)/bin/jupyter-book build $(PDF)/student-src --all -W -n --keep-going \
+	  --builder singlehtml --path-output $(PDF)/student > $(PDF)/student-build.log 2>&1 || \
+	  { tail -n 40 $(PDF)/student-build.log; exit 1; }
+	$(PY) tools/editions.py check-student $(PDF)/student/_build/singlehtml
+	$(PY) tools/print_pdf.py $(PDF)/student/_build/singlehtml $(PDF)/railtrack-book-student.pdf
+	@echo "The PDFs are $(CURDIR)/$(PDF)/railtrack-book.pdf and railtrack-book-student.pdf"
+
 # JupyterLab on this machine only (127.0.0.1), the venv's kernel; Ctrl-C stops it.
 # Offline: no extension manager asking PyPI, no news, no update check.
 # (--allow-root only where make runs as root, as in a container.)
@@ -103,18 +126,23 @@ lab: $(STAMP)
 	  $(if $(filter 0,$(shell id -u)),--allow-root)
 
 # Every step always runs; the target fails if any fails.  nbval compares
-# the stored outputs of every notebook under book/ with a fresh run.
+# the stored outputs of every notebook under book/ with a fresh run.  The
+# tests and the notebooks share one pytest run spread over every core
+# (pytest-xdist; --dist loadscope keeps each notebook, and each test module,
+# on one worker, in order); one BLAS thread per worker, so that the workers
+# do not compete for the cores.
+TEST_WORKERS ?= auto
 test: $(STAMP) $(MATHJAX)
 	@status=0; \
 	notebooks=$$(find book -name '*.ipynb' -not -path '*/.ipynb_checkpoints/*' -not -path '*/_build/*' | sort); \
 	if [ -z "$$notebooks" ]; then echo "== nbval: no notebooks under book/ yet, nothing to compare"; fi; \
-	echo "== pytest: tests/"; \
-	$(PY) -m pytest tests || status=1; \
-	if [ -n "$$notebooks" ]; then \
-	  echo "== nbval: "$$notebooks; \
-	  $(PY) -m pytest --nbval --nbval-current-env --nbval-sanitize-with $(SANITIZE) \
-	    --nbval-cell-timeout=$(NB_TIMEOUT) $$notebooks || status=1; \
-	fi; \
+	echo "== ruff: the notebooks' code is formatted and fits the page (76 columns)"; \
+	{ $(VENV)/bin/ruff format --check --quiet . && $(VENV)/bin/ruff check --quiet .; } || status=1; \
+	echo "== pytest over tests/ and nbval over "$$notebooks", on $(TEST_WORKERS) workers"; \
+	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1 \
+	  $(PY) -m pytest -n $(TEST_WORKERS) --dist loadscope tests $$notebooks \
+	    --nbval --nbval-current-env --nbval-sanitize-with $(SANITIZE) \
+	    --nbval-cell-timeout=$(NB_TIMEOUT) || status=1; \
 	echo "== the book from its stored outputs, Sphinx warnings and broken references as errors"; \
 	{ $(PY) tools/editions.py stored $(STORED)-src && \
 	  $(VENV)/bin/jupyter-book build $(STORED)-src --all -W -n --keep-going --path-output $(STORED) \

@@ -89,3 +89,73 @@ def test_the_leak_check_finds_a_printed_line_of_a_solution(tmp_path):
     assert editions.check_build(tmp_path)
     page.write_text("<html><body><p>Solution to Exercise 1.1</p></body></html>")
     assert editions.check_build(tmp_path)
+
+
+def test_the_leak_check_reads_the_chapters_of_a_single_page_build(tmp_path):
+    """make pdf checks a singlehtml build: each chapter is a part of one page."""
+    source = next(p for p in NOTEBOOKS if editions.solution_traces(json.loads(p.read_text()))[0])
+    line = editions.solution_traces(json.loads(source.read_text()))[0][0]
+    other = next(p for p in NOTEBOOKS if p != source)
+    page = tmp_path / "book" / "index.html"
+    page.parent.mkdir()
+
+    def single_page(first, second):
+        return (f'<html><body><span id="document-book/{source.stem}"></span>{first}'
+                f'<span id="document-book/{other.stem}"></span>{second}</body></html>')
+
+    # The line printed in another chapter is not a leak of this one.
+    page.write_text(single_page("<p>an exercise</p>", f"<pre>{line}</pre>"))
+    assert not [m for m in editions.check_build(tmp_path) if line in m]
+    page.write_text(single_page(f"<pre>{line}</pre>", "<p>another chapter</p>"))
+    assert [m for m in editions.check_build(tmp_path) if line in m]
+
+
+def test_the_appendix_edition_moves_every_solution_and_unfolds_it(tmp_path):
+    written = editions.write_sources(tmp_path, "appendix")
+    by_name = {path.stem: json.loads(path.read_text()) for path in written}
+    appendix = by_name.pop(editions.APPENDIX)
+    for name, notebook in by_name.items():
+        assert not any(editions.is_solution(c) for c in notebook["cells"]), name
+    moved = [c for c in appendix["cells"] if editions.is_solution(c)]
+    originals = [c for path in NOTEBOOKS for c in _cells(path) if editions.is_solution(c)]
+    assert [c["id"] for c in moved] == [c["id"] for c in originals]
+    assert [c.get("outputs") for c in moved] == [c.get("outputs") for c in originals]
+    titles = [SOLUTION.match(_text(c)).groups() for c in moved if SOLUTION.match(_text(c))]
+    assert titles == sorted(titles, key=lambda t: (int(t[0]), int(t[1])))
+    assert not any(":class: dropdown" in _text(c) or "hide-cell" in c["metadata"].get("tags", [])
+                   for c in moved)
+    toc = (tmp_path / "_toc.yml").read_text()
+    assert f"file: book/{editions.APPENDIX}" in toc
+    assert toc.index(editions.APPENDIX) < toc.index("book/bibliography")
+
+
+SKIPPABLE = re.compile(r"^```\{admonition\} Check: skip on a first reading\n:class: skippable\n")
+# What the course guide tells a first reading it may skip, chapter by chapter:
+# the SymPy checks of the derivations, and these sections (their headings).
+SKIPPABLE_SECTIONS = {
+    "05_semi_analytical_method": ["How fast the iteration converges"],
+    "11_verification": ["Mesh and time-step convergence"],
+    "12_conclusions": ["Misprints"],
+}
+DERIVATION_CHAPTERS = ["02_rail_receptance", "03_sleeper_dynamics", "04_train_load",
+                       "05_semi_analytical_method", "06_linear_foundation",
+                       "07_bilinear_foundation", "08_cubic_foundation"]
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_what_a_first_reading_may_skip_is_marked_by_a_check_box(path):
+    cells = _cells(path)
+    boxes = [i for i, c in enumerate(cells) if c["cell_type"] == "markdown"
+             and "Check: skip" in _text(c)]
+    for i in boxes:
+        assert SKIPPABLE.match(_text(cells[i])), _text(cells[i])[:120]
+        assert not editions.is_solution(cells[i])
+        # The box says what follows: it is not the last cell of its section.
+        following = cells[i + 1] if i + 1 < len(cells) else None
+        assert following is not None and not _text(following).startswith("## ")
+    if path.stem in DERIVATION_CHAPTERS:
+        assert boxes, "a derivation chapter whose SymPy checks are not marked"
+    for heading in SKIPPABLE_SECTIONS.get(path.stem, []):
+        start = next(i for i, c in enumerate(cells)
+                     if re.search(rf"^##+ {re.escape(heading)}", _text(c), re.M))
+        assert any(start <= i <= start + 1 for i in boxes), f"no box under '{heading}'"

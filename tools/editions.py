@@ -12,9 +12,13 @@ to build from the outputs stored in the notebooks, which `make test`
   notebook tag ``solution``; the student edition drops those cells, and
   ``check-student`` reads its built HTML and fails if any solution text,
   printed line or figure reached it.
+- ``appendix``: the book for print (`make pdf`): the solutions leave the
+  chapters for an appendix of their own, "Solutions to the exercises",
+  where they are shown unfolded.
 
     python tools/editions.py stored TARGET
     python tools/editions.py student TARGET
+    python tools/editions.py appendix TARGET
     python tools/editions.py check-student HTML_DIR
 """
 
@@ -46,6 +50,50 @@ def strip_solutions(notebook: dict) -> dict:
     return stripped
 
 
+APPENDIX = "solutions"
+APPENDIX_TOC = f"""  - caption: Appendix
+    chapters:
+      - file: book/{APPENDIX}
+"""
+
+
+def unfolded(cell: dict) -> dict:
+    """A solution cell as the appendix shows it: its text and its code unfolded."""
+    cell = json.loads(json.dumps(cell))
+    tags = cell.get("metadata", {}).get("tags", [])
+    if "hide-cell" in tags:
+        tags.remove("hide-cell")
+    if cell["cell_type"] == "markdown":
+        source = "".join(cell["source"])
+        cell["source"] = re.sub(r"^:class: dropdown\n", "", source, flags=re.M)
+    return cell
+
+
+def solutions_appendix(chapters: list[tuple[str, dict]]) -> dict:
+    """One notebook holding every chapter's solutions, under the chapter's title."""
+    cells = [_markdown(
+        "# Solutions to the exercises\n\n"
+        "The solutions of every chapter's exercises, in the book's order. "
+        "Their numbers and figures are those the library computed when the "
+        "book was last executed.")]
+    for name, notebook in chapters:
+        solutions = [unfolded(cell) for cell in notebook["cells"] if is_solution(cell)]
+        if not solutions:
+            continue
+        title = next(line for cell in notebook["cells"] if cell["cell_type"] == "markdown"
+                     for line in "".join(cell["source"]).splitlines() if line.startswith("# "))
+        cells += [_markdown(f"## {title[2:]}\n\nThe exercises are in {{doc}}`{name}`.")]
+        cells += solutions
+    metadata = chapters[0][1].get("metadata", {}) if chapters else {}
+    return {"cells": cells, "metadata": metadata, "nbformat": 4, "nbformat_minor": 5}
+
+
+def _markdown(text: str) -> dict:
+    digest = hashlib.sha256(text.encode()).hexdigest()[:8]
+    return {"cell_type": "markdown", "id": f"appendix-{digest}", "metadata": {},
+            "source": text}
+
+
 def solution_traces(notebook: dict) -> tuple[list[str], set[str]]:
     """What a solution would leave in a page: its printed lines and its figures' hashes.
 
@@ -68,28 +116,54 @@ def solution_traces(notebook: dict) -> tuple[list[str], set[str]]:
     return lines, images
 
 
-def write_sources(target: Path, student: bool) -> list[Path]:
-    """Copy the book's sources to `target` (without solutions if `student`); return the notebooks."""
+def write_sources(target: Path, edition: str) -> list[Path]:
+    """Copy the book's sources to `target` as `edition` makes them; return the notebooks.
+
+    `edition` is ``stored`` (as they are), ``student`` (without solutions)
+    or ``appendix`` (the solutions moved to an appendix).
+    """
     if target.exists():
         shutil.rmtree(target)
     shutil.copytree(ROOT / "book", target / "book",
                     ignore=shutil.ignore_patterns("*.ipynb", ".ipynb_checkpoints"))
-    shutil.copy(ROOT / "_toc.yml", target / "_toc.yml")
+    toc = (ROOT / "_toc.yml").read_text()
+    if edition == "appendix":
+        toc, count = re.subn(r"^  - caption: References$", APPENDIX_TOC + r"\g<0>", toc,
+                             flags=re.M)
+        assert count == 1, "_toc.yml must have one References part"
+    (target / "_toc.yml").write_text(toc)
     config = (ROOT / "_config.yml").read_text()
     config, count = re.subn(r"execute_notebooks: \w+", "execute_notebooks: \"off\"", config)
     assert count == 1, "_config.yml must set execute_notebooks once"
-    if student:
+    if edition == "student":
         config = re.sub(r'^title: "(.*)"$', r'title: "\1 (student edition)"', config, count=1,
                         flags=re.M)
     (target / "_config.yml").write_text(config)
+    notebooks = {source.stem: json.loads(source.read_text())
+                 for source in sorted((ROOT / "book").glob("*.ipynb"))}
+    if edition == "appendix":
+        notebooks[APPENDIX] = solutions_appendix(list(notebooks.items()))
     written = []
-    for source in sorted((ROOT / "book").glob("*.ipynb")):
-        notebook = json.loads(source.read_text())
-        notebook = strip_solutions(notebook) if student else notebook
-        path = target / "book" / source.name
+    for name, notebook in notebooks.items():
+        if edition in ("student", "appendix") and name != APPENDIX:
+            notebook = strip_solutions(notebook)
+        path = target / "book" / f"{name}.ipynb"
         path.write_text(json.dumps(notebook, indent=1, ensure_ascii=False) + "\n")
         written.append(path)
     return written
+
+
+def chapter_of_single_page(text: str, stem: str) -> str:
+    """The part of a single-page build (make pdf) that holds notebook `stem`.
+
+    Sphinx's singlehtml builder opens every document with an empty
+    ``<span id="document-book/STEM">``; the part runs to the next one.
+    """
+    start = text.find(f'id="document-book/{stem}"')
+    if start < 0:
+        return ""
+    end = text.find('id="document-', start + 1)
+    return text[start:end if end >= 0 else len(text)]
 
 
 def check_build(html: Path) -> list[str]:
@@ -103,7 +177,10 @@ def check_build(html: Path) -> list[str]:
     for source in sorted((ROOT / "book").glob("*.ipynb")):
         lines, figures = solution_traces(json.loads(source.read_text()))
         page = html / "book" / (source.stem + ".html")
-        text = pages.get(page, "")
+        text = pages.get(page)
+        if text is None:
+            text = chapter_of_single_page(pages.get(html / "book" / "index.html", ""),
+                                          source.stem)
         found += [f"{page.name}: printed by a solution: {line!r}" for line in lines
                   if line in text]
         found += [f"{images[h].relative_to(html)}: a figure of a solution of {source.name}"
@@ -112,12 +189,13 @@ def check_build(html: Path) -> list[str]:
 
 
 def main(argv: list[str]) -> int:
-    if len(argv) != 3 or argv[1] not in ("stored", "student", "check-student"):
+    if len(argv) != 3 or argv[1] not in ("stored", "student", "appendix", "check-student"):
         print(__doc__, file=sys.stderr)
         return 2
     if argv[1] != "check-student":
-        written = write_sources(Path(argv[2]), student=argv[1] == "student")
-        kind = "without solutions" if argv[1] == "student" else "with their stored outputs"
+        written = write_sources(Path(argv[2]), argv[1])
+        kind = {"stored": "with their stored outputs", "student": "without solutions",
+                "appendix": "with the solutions in an appendix"}[argv[1]]
         print(f"{argv[1]} edition: {len(written)} notebooks {kind} in {argv[2]}")
         return 0
     found = check_build(Path(argv[2]))

@@ -323,6 +323,27 @@ def check_images(driver):
     return problems
 
 
+_OVERFLOWING_JS = """
+const boxes = document.querySelectorAll(
+  'pre, .pst-scrollable-table-container, mjx-container[display="true"]');
+return Array.from(boxes)
+  .filter(b => b.scrollWidth > b.clientWidth + 1)
+  .map(b => ({tag: b.tagName.toLowerCase(), over: b.scrollWidth - b.clientWidth,
+              text: (b.innerText || "").trim().split("\\n")
+                      .reduce((a, l) => l.length > a.length ? l : a, "").slice(0, 100)}));
+"""
+
+
+def check_overflow(driver):
+    """(f) No code, output, table or displayed equation wider than the page.
+
+    Such a box scrolls sideways on screen and is cut on paper.  Reports each
+    box with how many pixels it overflows and its longest line.
+    """
+    return [f"{box['tag']} {box['over']} px wider than the page: {box['text']!r}"
+            for box in driver.execute_script(_OVERFLOWING_JS)]
+
+
 # ----------------------------------------------------------- (c) console ---
 
 
@@ -483,6 +504,7 @@ def inspect_page(driver, url, base_url, root, known_pages=None, screenshot=None)
         "console": check_console(logs["browser"]),
         "requests": check_requests(logs["performance"], base_url),
         "links": check_links(driver, base_url, root, known_pages),
+        "overflow": check_overflow(driver),
     }
     if screenshot is not None:
         save_screenshot(driver, screenshot)

@@ -61,6 +61,11 @@ PAGES = {
         head='<script src="https://example.invalid/x.js"></script>',
         body="<p>This page asks the internet for a script.</p>",
     ),
+    "overflow.html": dict(
+        head="<style>pre { width: 300px; overflow-x: auto; }</style>",
+        body=("<pre>short line</pre>"
+              "<pre>print(f'a line of code far wider than the 300 px box that holds it')</pre>"),
+    ),
     "console_error.html": dict(body='<script>console.error("boom from the page");</script><p>hi</p>'),
 }
 
@@ -123,6 +128,11 @@ def test_link_to_page_outside_the_toc_is_reported(browser, site):
 def test_request_leaving_localhost_is_reported(browser, site):
     results = inspect(browser, site, "external.html")
     assert "https://example.invalid/x.js" in joined(results["requests"]), results
+
+
+def test_code_wider_than_the_page_is_reported(browser, site):
+    problems = inspect(browser, site, "overflow.html")["overflow"]
+    assert len(problems) == 1 and "far wider" in problems[0], problems
 
 
 def test_console_error_is_reported(browser, site):
