@@ -124,6 +124,12 @@ def test_the_appendix_edition_moves_every_solution_and_unfolds_it(tmp_path):
     assert titles == sorted(titles, key=lambda t: (int(t[0]), int(t[1])))
     assert not any(":class: dropdown" in _text(c) or "hide-cell" in c["metadata"].get("tags", [])
                    for c in moved)
+    # Every chapter with exercises says where their solutions went.
+    with_exercises = [n for n, nb in by_name.items()
+                      if any(re.search(r"^## Exercises$", _text(c), re.M) for c in nb["cells"])]
+    assert len(with_exercises) == 12
+    for name in with_exercises:
+        assert editions.WHERE_SOLUTIONS_ARE["appendix"] in json.dumps(by_name[name]), name
     toc = (tmp_path / "_toc.yml").read_text()
     assert f"file: book/{editions.APPENDIX}" in toc
     assert toc.index(editions.APPENDIX) < toc.index("book/bibliography")

@@ -57,6 +57,24 @@ APPENDIX_TOC = f"""  - caption: Appendix
 """
 
 
+# What each edition says under every chapter's "## Exercises" heading about
+# where the solutions are.
+WHERE_SOLUTIONS_ARE = {
+    "student": "This edition has no solutions.",
+    "appendix": f"The solutions are gathered in {{doc}}`{APPENDIX}`, at the end of the book.",
+}
+
+
+def with_note_on_solutions(notebook: dict, note: str) -> dict:
+    """A copy of the notebook whose Exercises sections say where the solutions are."""
+    notebook = json.loads(json.dumps(notebook))
+    for cell in notebook["cells"]:
+        if cell["cell_type"] == "markdown":
+            cell["source"] = re.sub(r"^## Exercises\n", f"## Exercises\n\n{note}\n",
+                                    "".join(cell["source"]), flags=re.M)
+    return notebook
+
+
 def unfolded(cell: dict) -> dict:
     """A solution cell as the appendix shows it: its text and its code unfolded."""
     cell = json.loads(json.dumps(cell))
@@ -146,7 +164,8 @@ def write_sources(target: Path, edition: str) -> list[Path]:
     written = []
     for name, notebook in notebooks.items():
         if edition in ("student", "appendix") and name != APPENDIX:
-            notebook = strip_solutions(notebook)
+            notebook = with_note_on_solutions(strip_solutions(notebook),
+                                              WHERE_SOLUTIONS_ARE[edition])
         path = target / "book" / f"{name}.ipynb"
         path.write_text(json.dumps(notebook, indent=1, ensure_ascii=False) + "\n")
         written.append(path)
