@@ -90,9 +90,17 @@ STORED      := _build/stored
 STUDENT     := _build/student
 LAB_PORT    ?= 8888
 
+# $(call edition,KIND,OUT[,BUILDER]): write the KIND edition's sources
+# (stored, student or appendix) to OUT-src and build them into OUT with
+# Sphinx warnings as errors; the log is OUT-build.log, and on failure its
+# warnings and errors are shown (or its tail, if it has none).
+edition = $(PY) tools/editions.py $(1) $(2)-src && \
+  { $(VENV)/bin/jupyter-book build $(2)-src --all -W -n --keep-going \
+      --builder $(or $(3),html) --path-output $(2) > $(2)-build.log 2>&1 || \
+    { grep -E 'WARNING|ERROR' $(2)-build.log || tail -n 40 $(2)-build.log; false; }; }
+
 book-student: $(STAMP) $(MATHJAX)
-	$(PY) tools/editions.py student $(STUDENT)-src
-	$(VENV)/bin/jupyter-book build $(STUDENT)-src --all -W -n --keep-going --path-output $(STUDENT)
+	$(call edition,student,$(STUDENT))
 	$(PY) tools/editions.py check-student $(STUDENT)/_build/html
 	@echo "The student edition is at $(CURDIR)/$(STUDENT)/_build/html/index.html"
 
@@ -102,15 +110,9 @@ book-student: $(STAMP) $(MATHJAX)
 PDF         := _build/pdf
 
 pdf: $(STAMP) $(MATHJAX)
-	$(PY) tools/editions.py appendix $(PDF)/book-src
-	$(VENV)/bin/jupyter-book build $(PDF)/book-src --all -W -n --keep-going \
-	  --builder singlehtml --path-output $(PDF)/book > $(PDF)/book-build.log 2>&1 || \
-	  { tail -n 40 $(PDF)/book-build.log; exit 1; }
+	$(call edition,appendix,$(PDF)/book,singlehtml)
 	$(PY) tools/print_pdf.py $(PDF)/book/_build/singlehtml $(PDF)/railtrack-book.pdf
-	$(PY) tools/editions.py student $(PDF)/student-src
-	$(VENV)/bin/jupyter-book build $(PDF)/student-src --all -W -n --keep-going \
-	  --builder singlehtml --path-output $(PDF)/student > $(PDF)/student-build.log 2>&1 || \
-	  { tail -n 40 $(PDF)/student-build.log; exit 1; }
+	$(call edition,student,$(PDF)/student,singlehtml)
 	$(PY) tools/editions.py check-student $(PDF)/student/_build/singlehtml
 	$(PY) tools/print_pdf.py $(PDF)/student/_build/singlehtml $(PDF)/railtrack-book-student.pdf
 	@echo "The PDFs are $(CURDIR)/$(PDF)/railtrack-book.pdf and railtrack-book-student.pdf"
@@ -144,15 +146,11 @@ test: $(STAMP) $(MATHJAX)
 	    --nbval --nbval-current-env --nbval-sanitize-with $(SANITIZE) \
 	    --nbval-cell-timeout=$(NB_TIMEOUT) || status=1; \
 	echo "== the book from its stored outputs, Sphinx warnings and broken references as errors"; \
-	{ $(PY) tools/editions.py stored $(STORED)-src && \
-	  $(VENV)/bin/jupyter-book build $(STORED)-src --all -W -n --keep-going --path-output $(STORED) \
-	    > $(STORED)-build.log 2>&1; } || { tail -n 40 $(STORED)-build.log; status=1; }; \
+	{ $(call edition,stored,$(STORED)); } || status=1; \
 	echo "== headless Chromium on every page of that build (tests/rendered)"; \
 	$(PY) -m pytest -q tests/rendered/test_pages.py --book-html $(STORED)/_build/html || status=1; \
 	echo "== the student edition: no solution may reach it"; \
-	{ $(PY) tools/editions.py student $(STUDENT)-src && \
-	  $(VENV)/bin/jupyter-book build $(STUDENT)-src --all -W -n --keep-going --path-output $(STUDENT) \
-	    > $(STUDENT)-build.log 2>&1 && \
+	{ $(call edition,student,$(STUDENT)) && \
 	  $(PY) tools/editions.py check-student $(STUDENT)/_build/html; } || status=1; \
 	if [ $$status -ne 0 ]; then echo "make test: FAILED" >&2; fi; \
 	exit $$status

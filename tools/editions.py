@@ -25,6 +25,7 @@ to build from the outputs stored in the notebooks, which `make test`
 from __future__ import annotations
 
 import base64
+import copy
 import hashlib
 import html as entities
 import json
@@ -67,7 +68,7 @@ WHERE_SOLUTIONS_ARE = {
 
 def with_note_on_solutions(notebook: dict, note: str) -> dict:
     """A copy of the notebook whose Exercises sections say where the solutions are."""
-    notebook = json.loads(json.dumps(notebook))
+    notebook = copy.deepcopy(notebook)
     for cell in notebook["cells"]:
         if cell["cell_type"] == "markdown":
             cell["source"] = re.sub(r"^## Exercises\n", f"## Exercises\n\n{note}\n",
@@ -77,7 +78,7 @@ def with_note_on_solutions(notebook: dict, note: str) -> dict:
 
 def unfolded(cell: dict) -> dict:
     """A solution cell as the appendix shows it: its text and its code unfolded."""
-    cell = json.loads(json.dumps(cell))
+    cell = copy.deepcopy(cell)
     tags = cell.get("metadata", {}).get("tags", [])
     if "hide-cell" in tags:
         tags.remove("hide-cell")
