@@ -12,6 +12,7 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.rail_field` eq. (3) at any offset x: the rail between sleepers
 `railtrack.moment`     the rail's bending moment: its kinks in closed form
 `railtrack.bowl`       the deflection bowl along the track
+`railtrack.energy`     work of the pads, the foundation and the loads
 `railtrack.ballast`    a ballast-subgrade support reduced to one layer
 `railtrack.sleeper`    Section 2.2, eqs. (4)–(8), (14): pad, coupling P
 `railtrack.load`       Section 2.3, eqs. (9)–(16): the load F
@@ -57,6 +58,7 @@ from .foundations import (
     LinearFoundation,
     as_foundation,
 )
+from .energy import Dissipation, dissipation, load_work
 from .linear import analytic_coefficients, sweep_extremes, sweep_speeds
 from .rail_field import offset_receptance
 from .receptance import rail_receptance, rail_receptance_lattice_sum
@@ -132,4 +134,7 @@ __all__ = [
     "NonFiniteLawError",
     "estimate_step_error",
     "explore",
+    "dissipation",
+    "Dissipation",
+    "load_work",
 ]

@@ -68,6 +68,10 @@ def evaluate_law(foundation, w: np.ndarray, rate: np.ndarray):
     """
     force = np.asarray(foundation.force(w, rate), float)
     slope, viscosity = (np.asarray(value, float) for value in foundation.tangent(w, rate))
+    # The common case in one pass; the search for the culprit only on failure
+    # (this runs several times per time step).
+    if np.isfinite(force).all() and np.isfinite(slope).all() and np.isfinite(viscosity).all():
+        return force, slope, viscosity
     for name, value in (("force", force), ("stiffness df/dw", slope), ("damping df/dw'", viscosity)):
         bad = ~np.isfinite(np.broadcast_to(value, np.shape(w)))
         if np.any(bad):
