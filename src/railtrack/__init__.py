@@ -13,6 +13,7 @@ tracks on nonlinear foundations", COMPDYN 2015.  Modules follow the paper:
 `railtrack.moment`     the rail's bending moment: its kinks in closed form
 `railtrack.bowl`       the deflection bowl along the track
 `railtrack.energy`     work of the pads, the foundation and the loads
+`railtrack.dispersion` free waves of the smeared track; harmonics' resonance speeds
 `railtrack.ballast`    a ballast-subgrade support reduced to one layer
 `railtrack.sleeper`    Section 2.2, eqs. (4)–(8), (14): pad, coupling P
 `railtrack.load`       Section 2.3, eqs. (9)–(16): the load F
