@@ -224,3 +224,15 @@ def test_unknown_initial_setting_is_refused():
     with pytest.raises(TypeError, match="colour"):
         ex.explore(colour="red")
     assert ex.explore(speed=30.0, law="cubic").state.values["speed"] == 30.0
+
+
+def test_the_speed_slider_reaches_the_resonance_of_a_lightly_damped_track():
+    # eta1 = 30 kN s/m, eta2 = 20 kN s/m: eq. (23) peaks near 365 m/s at about
+    # 2.5 times the static dip (chapter 10); the slider must get there.
+    assert ex.CONTROLS["speed"][2] >= 700.0
+    light = {"pad_damping": 30.0, "foundation_damping": 20.0}
+    slow = ex.explorer_state(speed=5.0, **light)
+    peak = ex.explorer_state(speed=365.0, **light)
+    assert slow.error is None and peak.error is None
+    ratio = peak.solution.one_period(2000)[1].min() / slow.solution.one_period(2000)[1].min()
+    assert ratio == pytest.approx(2.48, abs=0.03)

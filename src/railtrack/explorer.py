@@ -34,7 +34,7 @@ LAWS = {"linear": "linear, eq. (22)", "bilinear": "bilinear, eq. (24)", "cubic":
 TRAINS = {"paper": "paper's wagon", "passenger_coach": "passenger coach", "freight_wagon": "freight wagon"}
 WORST_TRUNCATION = 1e-2  # a solution whose estimated truncation error exceeds this is not drawn
 # The controls from top to bottom: a dropdown's choices, or a slider's (label, min, max, step)
-CONTROLS = {"train": TRAINS, "speed": ("speed v [m/s]", 5.0, 120.0, 1.0),
+CONTROLS = {"train": TRAINS, "speed": ("speed v [m/s]", 5.0, 700.0, 1.0),
             "pad_damping": ("pad damping η₁ [kN s/m]", 0.0, 2000.0, 10.0),
             "foundation_stiffness": ("foundation stiffness k₂ [MN/m]", 1.0, 100.0, 1.0),
             "foundation_damping": ("foundation damping η₂ [kN s/m]", 0.0, 1000.0, 10.0),
