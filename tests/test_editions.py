@@ -140,6 +140,8 @@ SKIPPABLE = re.compile(r"^```\{admonition\} Check: skip on a first reading\n:cla
 # the SymPy checks of the derivations, and these sections (their headings).
 SKIPPABLE_SECTIONS = {
     "05_semi_analytical_method": ["How fast the iteration converges"],
+    "10_train_speeds_up": ["A time-domain check",
+                           "The linear law's second peak, and what the folds sit on"],
     "11_verification": ["Mesh and time-step convergence"],
     "12_conclusions": ["Misprints"],
 }
@@ -165,3 +167,24 @@ def test_what_a_first_reading_may_skip_is_marked_by_a_check_box(path):
         start = next(i for i, c in enumerate(cells)
                      if re.search(rf"^##+ {re.escape(heading)}", _text(c), re.M))
         assert any(start <= i <= start + 1 for i in boxes), f"no box under '{heading}'"
+
+
+def test_the_student_edition_promises_no_solution(tmp_path):
+    """Under "this edition has no solutions" nothing may ask the reader to read one."""
+    editions.write_sources(tmp_path / "src", "student")
+    for path in sorted((tmp_path / "src" / "book").glob("*.ipynb")):
+        text = "\n".join(_text(c) for c in _cells(path) if c["cell_type"] == "markdown")
+        for match in re.finditer(r"^## Exercises\n\n([^\n]*)", text, flags=re.M):
+            intro = match.group(1)
+            assert intro.startswith(editions.WHERE_SOLUTIONS_ARE["student"]), path.name
+            rest = intro[len(editions.WHERE_SOLUTIONS_ARE["student"]):]
+            assert not editions.ABOUT_SOLUTIONS.search(rest), (path.name, rest)
+
+
+def test_the_leak_check_finds_a_promise_of_a_solution(tmp_path):
+    page = tmp_path / "book" / "index.html"
+    page.parent.mkdir()
+    page.write_text("<html><body><p>Work the exercises.</p></body></html>")
+    assert editions.check_build(tmp_path) == []
+    page.write_text("<html><body><p>Try each before you read its solution.</p></body></html>")
+    assert editions.check_build(tmp_path)

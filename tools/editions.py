@@ -61,18 +61,35 @@ APPENDIX_TOC = f"""  - caption: Appendix
 # What each edition says under every chapter's "## Exercises" heading about
 # where the solutions are.
 WHERE_SOLUTIONS_ARE = {
-    "student": "This edition has no solutions.",
+    "student": ("This edition has no solutions: work each exercise on your own, then "
+                "compare with your classmates or ask your teacher."),
     "appendix": f"The solutions are gathered in {{doc}}`{APPENDIX}`, at the end of the book.",
 }
+# A sentence that speaks of the solutions as if the reader had them; the
+# student edition drops each from the Exercises sections' introductions.
+ABOUT_SOLUTIONS = re.compile(r"\bsolutions?\b", re.I)
 
 
-def with_note_on_solutions(notebook: dict, note: str) -> dict:
-    """A copy of the notebook whose Exercises sections say where the solutions are."""
+def with_note_on_solutions(notebook: dict, note: str, keep_intro: bool = True) -> dict:
+    """A copy of the notebook whose Exercises sections say where the solutions are.
+
+    With ``keep_intro=False`` (the student edition) the sentences of the
+    section's first paragraph that mention solutions are dropped.
+    """
     notebook = copy.deepcopy(notebook)
     for cell in notebook["cells"]:
-        if cell["cell_type"] == "markdown":
-            cell["source"] = re.sub(r"^## Exercises\n", f"## Exercises\n\n{note}\n",
-                                    "".join(cell["source"]), flags=re.M)
+        if cell["cell_type"] != "markdown":
+            continue
+        text = "".join(cell["source"])
+        match = re.search(r"^## Exercises\n\n([^\n]*)", text, flags=re.M)
+        if match is None:
+            continue
+        intro = match.group(1)
+        if not keep_intro:
+            intro = " ".join(sentence for sentence in re.split(r"(?<=\.)\s+", intro)
+                             if not ABOUT_SOLUTIONS.search(sentence))
+        cell["source"] = (text[:match.start()] + f"## Exercises\n\n{note}"
+                          + (f" {intro}" if intro else "") + text[match.end():])
     return notebook
 
 
@@ -166,7 +183,8 @@ def write_sources(target: Path, edition: str) -> list[Path]:
     for name, notebook in notebooks.items():
         if edition in ("student", "appendix") and name != APPENDIX:
             notebook = with_note_on_solutions(strip_solutions(notebook),
-                                              WHERE_SOLUTIONS_ARE[edition])
+                                              WHERE_SOLUTIONS_ARE[edition],
+                                              keep_intro=edition != "student")
         path = target / "book" / f"{name}.ipynb"
         path.write_text(json.dumps(notebook, indent=1, ensure_ascii=False) + "\n")
         written.append(path)
@@ -186,6 +204,11 @@ def chapter_of_single_page(text: str, stem: str) -> str:
     return text[start:end if end >= 0 else len(text)]
 
 
+# Phrases that promise a solution to the reader (absent from the student edition).
+PROMISES = re.compile(r"before you read its solution|solutions? (?:is|are) folded|folded solutions?"
+                      r"|open (?:the|its) solution", re.I)
+
+
 def check_build(html: Path) -> list[str]:
     """Every trace of a solution found in the built pages, as messages (empty: none)."""
     pages = {path: entities.unescape(path.read_text(errors="replace"))
@@ -194,6 +217,8 @@ def check_build(html: Path) -> list[str]:
               for path in html.rglob("*.png")}
     found = [f"{path.relative_to(html)}: 'Solution to Exercise'"
              for path, text in pages.items() if MARKER.search(text)]
+    found += [f"{path.relative_to(html)}: speaks of a solution the edition lacks: {m.group(0)!r}"
+              for path, text in pages.items() for m in PROMISES.finditer(text)]
     for source in sorted((ROOT / "book").glob("*.ipynb")):
         lines, figures = solution_traces(json.loads(source.read_text()))
         page = html / "book" / (source.stem + ".html")
