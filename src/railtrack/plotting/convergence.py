@@ -27,7 +27,7 @@ from ..linear import analytic_coefficients
 from ..solution import Solution
 from ..solve import solve
 from ..passage import Passage
-from .style import MM, TIME_LABEL, new_figure
+from .style import BLACK, BLUE, MM, ORANGE, TIME_LABEL, VERMILLION, new_figure
 
 __all__ = [
     "METHOD_LABELS",
@@ -43,8 +43,8 @@ METHOD_LABELS = {"fixed-point": "fixed point, eq. (21)", "newton": "Newton, AFT 
 """Legend text of each `railtrack.solve` method in `plot_convergence`."""
 
 _METHOD_STYLE = {
-    "fixed-point": dict(color="tab:orange", lw=1.4),
-    "newton": dict(color="tab:blue", lw=1.4, marker="o", ms=4),
+    "fixed-point": dict(color=ORANGE, ls="-", lw=1.4),
+    "newton": dict(color=BLUE, ls="--", lw=1.4, marker="o", ms=4),
 }
 
 
@@ -88,20 +88,20 @@ def plot_aft(solution: Solution, samples: int | None = None) -> Figure:
 
     fig, (ax_w, ax_g, ax_G) = new_figure(3, 1, width=7.0, height=2.3)
     fine = np.linspace(0.0, T, 20 * N + 1)
-    ax_w.plot(fine, solution.sleeper_displacement(fine) * MM, color="0.6", lw=1.0,
+    ax_w.plot(fine, solution.sleeper_displacement(fine) * MM, "-", color="0.6", lw=1.0,
               label=r"$w_m(t)$, eq. (19)", gid="w-series")
-    ax_w.plot(t, w * MM, ".", color="tab:blue", ms=3,
+    ax_w.plot(t, w * MM, ".", color=BLUE, ms=3,
               label=f"N = {N} samples (inverse FFT)", gid="w-samples")
     ax_w.set_ylabel("w [mm] (up > 0)")
-    ax_g.plot(t, g, ".", color="tab:red", ms=3, label=r"$g = f(w, w')/M$ at the samples",
+    ax_g.plot(t, g, ".", color=VERMILLION, ms=3, label=r"$g = f(w, w')/M$ at the samples",
               gid="g-samples")
     ax_g.set_ylabel(r"g [m/s²]")
     for ax in (ax_w, ax_g):
         ax.set_xlabel(TIME_LABEL)
     n_all = np.arange(len(G_all))
-    ax_G.semilogy(n_all[m + 1:], G_all[m + 1:], "o", color="0.65", ms=3,
+    ax_G.semilogy(n_all[m + 1:], G_all[m + 1:], "x", color="0.5", ms=3.5,
                   label=r"$n > m$: dropped by the truncation", gid="G-dropped")
-    ax_G.semilogy(np.arange(m + 1), G_kept, "o", color="tab:red", ms=4,
+    ax_G.semilogy(np.arange(m + 1), G_kept, "o", color=VERMILLION, ms=4,
                   label=r"$n \leq m$: $\mathcal{F}_n$ of eq. (20)", gid="G-kept")
     ax_G.axvline(m + 0.5, color="0.3", ls=":", lw=0.9)
     ax_G.set_xlabel(r"harmonic number $n$ (FFT of the samples)")
@@ -137,11 +137,11 @@ def plot_contraction_factors(system: HarmonicSystem) -> Figure:
     first = contraction_factors(system, system.harmonics)
     second = contraction_factors(system, -1)
     fig, ax = new_figure(width=7.0, height=3.2)
-    ax.semilogy(n, first, "o-", color="tab:green", ms=4, lw=1.2,
+    ax.semilogy(n, first, "o-", color=BLUE, ms=4, lw=1.2,
                 label=r"first branch ($|n| \leq N_0$)", gid="first-branch")
-    ax.semilogy(n, second, "s-", color="tab:purple", ms=4, lw=1.2,
+    ax.semilogy(n, second, "s--", color=ORANGE, ms=4, lw=1.2,
                 label=r"second branch ($|n| > N_0$)", gid="second-branch")
-    ax.axhline(1.0, color="tab:red", lw=1.0, ls="--", label="1: converges below, diverges above")
+    ax.axhline(1.0, color=BLACK, lw=1.0, ls=":", label="1: converges below, diverges above")
     ax.annotate(f"mean (n = 0): {first[0]:.3f} = 1 - k2/k1", (0, first[0]), xytext=(1.5, 0.25),
                 arrowprops=dict(arrowstyle="->", lw=0.8), fontsize="small")
     ax.set_xlabel(r"harmonic number $n$")

@@ -28,7 +28,7 @@ from ..sleeper import rail_coupling
 from ..passage import Passage
 from ..load import wheel_passage_times
 from .schematic import draw_track_schematic
-from .style import MM, label_displacement_axes, new_figure
+from .style import BLUE, GREEN, MM, ORANGE, PURPLE, VERMILLION, label_displacement_axes, new_figure
 from .tables import (
     derived_table,
     foundation_rows,
@@ -84,24 +84,24 @@ def plot_receptance(passage: Passage, omega: np.ndarray | None = None,
     omega = np.asarray(omega, dtype=float)
     eta = rail_receptance(passage, omega)
     fig, ax = new_figure(width=7.5, height=4.2)
-    ax.loglog(omega, np.abs(eta) * RECEPTANCE_UNIT, color="0.15", lw=1.0,
+    ax.loglog(omega, np.abs(eta) * RECEPTANCE_UNIT, "-", color="0.15", lw=1.0,
               label=r"$|\eta_E(\omega)|$", gid="eta_E")
     low = omega[omega < 0.5 * critical_frequency(passage)]
     ax.loglog(low, RECEPTANCE_UNIT / (passage.rail_linear_mass * passage.sleeper_spacing * low**2),
-              color="tab:blue", ls="--", lw=0.9, label=r"$1/(\rho S L \omega^2)$: one span as a mass",
+              color=BLUE, ls="--", lw=1.0, label=r"$1/(\rho S L \omega^2)$: one span as a mass",
               gid="mass-asymptote")
     poles = receptance_pole_frequencies(passage, omega.max())
     poles = poles[poles >= omega.min()]
     star = critical_frequency(passage)
     for k, p in enumerate(poles):
         is_star = np.isclose(p, star)
-        ax.axvline(p, color="tab:red" if is_star else "tab:purple", lw=1.2 if is_star else 0.6,
-                   ls="-" if is_star else ":", zorder=0,
+        ax.axvline(p, color=VERMILLION if is_star else PURPLE, lw=1.2 if is_star else 0.7,
+                   ls="-." if is_star else ":", zorder=0,
                    label=(r"$\omega^* = v^2\sqrt{\rho S/EI}$" if is_star else
                           (r"other poles, $\cos k_bL = \cos(\omega L/v)$" if k == 1 else None)))
     wn = passage.fundamental_frequency * np.arange(1, harmonics + 1)
     ax.plot(wn, np.abs(rail_receptance(passage, wn)) * RECEPTANCE_UNIT, "o", ms=4,
-            color="tab:green", label=rf"train harmonics $\omega_n$, $n = 1..{harmonics}$",
+            color=ORANGE, mec="0.2", mew=0.5, label=rf"train harmonics $\omega_n$, $n = 1..{harmonics}$",
             gid="harmonics")
     ax.set_xlabel(r"angular frequency $\omega$ [rad/s]")
     ax.set_ylabel(r"$|\eta_E|$ [mm/kN]")
@@ -153,20 +153,21 @@ def plot_rail_coupling(passage: Passage, omega: np.ndarray | None = None,
     omega = np.asarray(omega, dtype=float)
     P = rail_coupling(passage, omega)
     fig, (top, bottom) = new_figure(2, 1, width=7.5, height=2.8, sharex=True)
-    top.loglog(omega, np.abs(P), color="0.15", lw=1.0, label=r"$|P(\omega)|$", gid="P")
-    top.axhline(passage.pad_natural_frequency_squared, color="tab:blue", ls="--", lw=0.9,
+    top.loglog(omega, np.abs(P), "-", color="0.15", lw=1.0, label=r"$|P(\omega)|$", gid="P")
+    top.axhline(passage.pad_natural_frequency_squared, color=BLUE, ls="--", lw=1.0,
                 label=r"$\omega_0^2 = k_1/M$")
-    top.loglog(omega, omega**2, color="tab:gray", ls=":", lw=0.9, label=r"$\omega^2$")
+    top.loglog(omega, omega**2, color="0.45", ls=":", lw=1.0, label=r"$\omega^2$")
     wn = passage.fundamental_frequency * np.arange(1, harmonics + 1)
     Pn = rail_coupling(passage, wn)
-    top.plot(wn, np.abs(Pn), "o", ms=4, color="tab:green", label=r"$P_n$, $n = 1..%d$" % harmonics)
-    top.axvline(critical_frequency(passage), color="tab:red", lw=0.8, label=r"$\omega^*$")
+    top.plot(wn, np.abs(Pn), "o", ms=4, color=ORANGE, mec="0.2", mew=0.5,
+             label=r"$P_n$, $n = 1..%d$" % harmonics)
+    top.axvline(critical_frequency(passage), color=VERMILLION, ls="-.", lw=1.0, label=r"$\omega^*$")
     top.set_ylim(passage.pad_natural_frequency_squared / 30, None)
     top.set_ylabel(r"$|P|$ [1/s²]")
     top.legend(fontsize="small", loc="upper left")
-    bottom.semilogx(omega, np.degrees(np.angle(P)), color="0.15", lw=1.0, gid="phase")
-    bottom.plot(wn, np.degrees(np.angle(Pn)), "o", ms=4, color="tab:green")
-    bottom.axvline(critical_frequency(passage), color="tab:red", lw=0.8)
+    bottom.semilogx(omega, np.degrees(np.angle(P)), "-", color="0.15", lw=1.0, gid="phase")
+    bottom.plot(wn, np.degrees(np.angle(Pn)), "o", ms=4, color=ORANGE, mec="0.2", mew=0.5)
+    bottom.axvline(critical_frequency(passage), color=VERMILLION, ls="-.", lw=1.0)
     bottom.set_ylabel(r"phase of $P$ [°]")
     bottom.set_xlabel(r"angular frequency $\omega$ [rad/s]")
     for ax in (top, bottom):
@@ -203,11 +204,11 @@ def plot_rail_and_sleeper(solution, samples: int = 400) -> Figure:
                                 gridspec_kw=dict(height_ratios=(1.6, 1.0)))
     passage = solution.passage
     rail, sleeper = solution.rail_displacement(t), solution.sleeper_displacement(t)
-    ax.plot(t, rail * MM, color="tab:blue", lw=1.4,
+    ax.plot(t, rail * MM, "-", color=BLUE, lw=1.4,
             label=r"rail above the sleeper, $w_r(0,t)$", gid="rail")
-    ax.plot(t, sleeper * MM, color="tab:orange", lw=1.4,
+    ax.plot(t, sleeper * MM, "--", color=ORANGE, lw=1.6,
             label=r"sleeper, $w(t)$", gid="sleeper")
-    pad.plot(t, (sleeper - rail) * MM, color="tab:green", lw=1.4,
+    pad.plot(t, (sleeper - rail) * MM, "-", color=GREEN, lw=1.4,
              label=r"pad compression $w - w_r(0,t)$", gid="compression")
     mean = passage.static_load_per_sleeper / passage.pad_stiffness
     pad.axhline(mean * MM, color="0.3", ls="--", lw=0.9, label=r"$2QL/(Hk_1)$",

@@ -37,8 +37,6 @@ True
 
 from __future__ import annotations
 
-from __future__ import annotations
-
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.axes import Axes
@@ -55,7 +53,7 @@ from .paper_figure_data import (
     harmonic_convergence_data,
 )
 from .panels import PAPER_HARMONICS, PAPER_ITERATIONS, PanelData
-from .style import MM, label_displacement_axes, new_figure
+from .style import BLUE, MARKERS, MM, ORANGE, PURPLE, VERMILLION, label_displacement_axes, new_figure
 
 __all__ = [
     "PAPER_HARMONICS",
@@ -81,6 +79,20 @@ def _colours(count: int) -> list:
     return [plt.get_cmap("viridis")(x) for x in np.linspace(0.0, 0.85, count)]
 
 
+def _markers(index: int, count: int, points: int, per_line: int = 10) -> dict:
+    """Marker of curve `index` of `count`, about `per_line` of them, staggered between curves.
+
+    The curves of a panel differ in colour (ordered along viridis) and in
+    marker, so that they can be told apart without colour.
+    """
+    step = max(points // per_line, 1)
+    return dict(marker=MARKERS[index % len(MARKERS)], markersize=4.5,
+                markevery=((index * step) // max(count, 1) % step, step))
+
+
+_FIGURE3_COLOURS = (VERMILLION, BLUE, PURPLE, ORANGE)
+
+
 def _mark_wheels(ax: Axes, passage: Passage) -> None:
     """Dotted verticals where a wheel is above the sleeper (front at 0 and T, back at D/v)."""
     front, back = wheel_passage_times(passage)
@@ -93,8 +105,10 @@ def _mark_wheels(ax: Axes, passage: Passage) -> None:
 
 def _draw_panel(ax: Axes, data: PanelData, passage: Passage, *, title: str) -> None:
     symbol = _SYMBOLS.get(data.parameter, data.parameter)
-    for colour, value, w in zip(_colours(len(data.values)), data.values, data.displacements):
-        ax.plot(data.times, w * MM, color=colour, linewidth=1.4, label=f"{symbol} = {value:g}")
+    count = len(data.values)
+    for n, (colour, value, w) in enumerate(zip(_colours(count), data.values, data.displacements)):
+        ax.plot(data.times, w * MM, "-", color=colour, linewidth=1.4, label=f"{symbol} = {value:g}",
+                **_markers(n, count, len(data.times)))
     references = np.atleast_2d(data.reference)
     for i, w in enumerate(references):
         ax.plot(data.times, w * MM, color="black", linestyle="--", linewidth=0.9,
@@ -118,17 +132,19 @@ def figure3(passage: Passage | None = None, foundation: LinearFoundation | None 
             **kwargs) -> Figure:
     """Figure 3 of the paper: linear foundation, analytic (eq. 23) against eq. (21).
 
-    Keyword arguments are those of `figure3_data`.
+    Eq. (23) is a thick grey band, each k its own colour and marker, and
+    Newton's solution dashed black.  Keyword arguments are those of `figure3_data`.
     """
     passage = Passage.paper() if passage is None else passage
     data = figure3_data(passage, foundation, **kwargs)
     fig, ax = new_figure()
-    ax.plot(data.times, data.reference * MM, color="0.75", linewidth=4.0,
+    ax.plot(data.times, data.reference * MM, "-", color="0.75", linewidth=4.0,
             label=data.reference_label)
-    colours = plt.get_cmap("tab10").colors[1:]
-    for colour, k, w in zip(colours, data.values, data.displacements):
-        ax.plot(data.times, w * MM, color=colour, linewidth=1.4,
-                label=f"fixed point, eq. (21), k = {k}")
+    count = len(data.values)
+    for n, (k, w) in enumerate(zip(data.values, data.displacements)):
+        ax.plot(data.times, w * MM, "-", color=_FIGURE3_COLOURS[n % len(_FIGURE3_COLOURS)],
+                linewidth=1.4, label=f"fixed point, eq. (21), k = {k}",
+                **_markers(n, count, len(data.times)))
     ax.plot(data.times, data.extra["Newton"] * MM, color="black", linestyle="--",
             linewidth=0.9, label="Newton (converged)")
     _mark_wheels(ax, passage)

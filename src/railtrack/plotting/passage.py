@@ -21,7 +21,7 @@ from matplotlib.figure import Figure
 
 from ..solve import solve
 from ..passage import Passage
-from .style import MM, new_figure
+from .style import MARKERS, MM, PALETTE, new_figure
 
 __all__ = ["PassageExtremes", "passage_extremes", "passage_study", "plot_passage_study"]
 
@@ -120,7 +120,7 @@ def passage_study(passage: Passage, laws: Mapping[str, object], speeds: Sequence
 
 
 def plot_passage_study(speeds: Sequence[float], study: Mapping[str, Sequence[PassageExtremes]]) -> Figure:
-    """Dips (top) and uplifts (bottom) against the train speed, one colour per law.
+    """Dips (top) and uplifts (bottom) against the train speed, one colour and marker per law.
 
     Parameters
     ----------
@@ -132,23 +132,25 @@ def plot_passage_study(speeds: Sequence[float], study: Mapping[str, Sequence[Pas
     Returns
     -------
     matplotlib.figure.Figure
-        Two axes sharing v [m/s]; top: front-wheel dip (solid, circles, gid
-        "<label>: front dip") and back-wheel dip (dashed, squares, gid
+        Two axes sharing v [m/s]; top: front-wheel dip (solid, gid
+        "<label>: front dip") and back-wheel dip (dashed, gid
         "<label>: back dip") in mm; bottom: uplift ahead of the next wagon
-        (solid) and behind the wagon (dashed) in mm.
+        (solid) and behind the wagon (dashed) in mm.  Each law has its own
+        colour and marker (circles, squares, triangles, ...).
     """
     fig, (dips, lifts) = new_figure(2, 1, height=2.8, sharex=True)
     speeds = np.asarray(speeds, float)
-    for (label, rows), colour in zip(study.items(), ("tab:blue", "tab:orange", "tab:green", "tab:red")):
+    for n, (label, rows) in enumerate(study.items()):
         get = lambda name: np.array([getattr(r, name) for r in rows]) * MM  # noqa: E731
-        dips.plot(speeds, get("front_dip"), "o-", ms=3, color=colour, gid=f"{label}: front dip",
-                  label=f"{label}: front wheel")
-        dips.plot(speeds, get("back_dip"), "s--", ms=3, color=colour, gid=f"{label}: back dip",
-                  label=f"{label}: back wheel")
-        lifts.plot(speeds, get("front_uplift"), "o-", ms=3, color=colour,
-                   gid=f"{label}: front uplift", label=f"{label}: ahead of the next wagon")
-        lifts.plot(speeds, get("rear_uplift"), "s--", ms=3, color=colour,
-                   gid=f"{label}: rear uplift", label=f"{label}: behind the wagon")
+        style = dict(color=PALETTE[n % len(PALETTE)], marker=MARKERS[n % len(MARKERS)], ms=3.5)
+        dips.plot(speeds, get("front_dip"), "-", gid=f"{label}: front dip",
+                  label=f"{label}: front wheel", **style)
+        dips.plot(speeds, get("back_dip"), "--", mfc="white", gid=f"{label}: back dip",
+                  label=f"{label}: back wheel", **style)
+        lifts.plot(speeds, get("front_uplift"), "-", gid=f"{label}: front uplift",
+                   label=f"{label}: ahead of the next wagon", **style)
+        lifts.plot(speeds, get("rear_uplift"), "--", mfc="white", gid=f"{label}: rear uplift",
+                   label=f"{label}: behind the wagon", **style)
     dips.set_ylabel("dip, min w [mm]")
     lifts.set_ylabel("uplift, max w [mm]")
     lifts.set_xlabel("train speed v [m/s]")

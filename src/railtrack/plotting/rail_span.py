@@ -50,7 +50,7 @@ def plot_rail_span(solution, wheel_positions: Sequence[float], points: int = 121
     fig, ax = new_figure()
     for position, values, marker in zip(wheel_positions, w, "osd^vx"):
         label = f"front wheel at {position:+.2f} m"
-        (line,) = ax.plot(x, values * MM, marker=marker, markevery=max(points // 8, 1), ms=3,
+        (line,) = ax.plot(x, values * MM, ls="-", marker=marker, markevery=max(points // 8, 1), ms=3,
                           label=label, gid=label)
         if 0.0 <= position <= span:
             ax.axvline(position, color=line.get_color(), ls=":", lw=1)

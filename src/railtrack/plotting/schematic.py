@@ -7,7 +7,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 
 from ..passage import Passage
-from .style import new_figure
+from .style import BLUE, ORANGE, VERMILLION, new_figure
 
 __all__ = ["draw_track_schematic"]
 
@@ -76,7 +76,7 @@ def draw_track_schematic(passage: Passage, *, sleepers: int = 9, observed: int =
     xs = np.arange(sleepers, dtype=float)
     left, right = -0.9, sleepers - 0.1
     y_pad, y_sl, y_gr = -0.85, -1.2, -1.9
-    dark = dict(color="0.15", lw=1.1)
+    dark = dict(color="0.15", ls="-", lw=1.1)
 
     # rail: an infinite beam (dotted ends)
     ax.add_patch(Rectangle((left, -0.07), right - left, 0.14, color="0.3", zorder=3))
@@ -88,14 +88,14 @@ def draw_track_schematic(passage: Passage, *, sleepers: int = 9, observed: int =
     for i, x in enumerate(xs):
         _spring(ax, x - 0.1, -0.07, y_pad, **dark)
         _dashpot(ax, x + 0.1, -0.07, y_pad, **dark)
-        colour = "tab:orange" if i == observed else "0.55"
+        colour = ORANGE if i == observed else "0.55"
         ax.add_patch(Rectangle((x - 0.2, y_sl), 0.4, y_pad - y_sl, color=colour, gid="sleeper",
                                zorder=3))
         ax.add_patch(Rectangle((x - 0.2, y_gr), 0.4, y_sl - y_gr, facecolor="0.92",
                                edgecolor="0.3", hatch="...", lw=0.8, gid="foundation"))
-    ax.plot([left, right], [y_gr, y_gr], color="0.2", lw=1.5)
+    ax.plot([left, right], [y_gr, y_gr], "-", color="0.2", lw=1.5)
     for x in np.arange(left, right, 0.25):
-        ax.plot([x, x - 0.15], [y_gr, y_gr - 0.15], color="0.4", lw=0.6)
+        ax.plot([x, x - 0.15], [y_gr, y_gr - 0.15], "-", color="0.4", lw=0.6)
 
     # labels of one pad, sleeper and foundation
     x0 = xs[0]
@@ -111,10 +111,10 @@ def draw_track_schematic(passage: Passage, *, sleepers: int = 9, observed: int =
     # observed sleeper: x = 0 and w positive upward
     xo = xs[observed]
     ax.add_patch(FancyArrowPatch((xo + 0.36, y_gr + 0.1), (xo + 0.36, y_pad), arrowstyle="-|>",
-                                 mutation_scale=11, color="tab:orange", lw=1.3))
-    ax.text(xo + 0.41, y_pad + 0.02, r"$w$", color="tab:orange", va="center")
+                                 mutation_scale=11, color=ORANGE, lw=1.3))
+    ax.text(xo + 0.41, y_pad + 0.02, r"$w$", color="0.1", va="center")
     ax.text(xo, y_gr - 0.3, r"observed sleeper, $x = 0$", ha="center", va="top",
-            color="tab:orange")
+            color="0.1")
 
     # sleeper spacing L
     _dimension(ax, xs[1], xs[2], y_gr - 0.45, rf"$L = {passage.sleeper_spacing:g}$ m")
@@ -126,14 +126,14 @@ def draw_track_schematic(passage: Passage, *, sleepers: int = 9, observed: int =
         ax.add_patch(Circle((x, y_wheel), radius, facecolor="white", edgecolor="0.1", lw=1.5,
                             gid="wheel", zorder=4))
         ax.add_patch(FancyArrowPatch((x, 1.55), (x, y_wheel + radius + 0.02), arrowstyle="-|>",
-                                     mutation_scale=12, color="tab:red", lw=1.6))
-        ax.text(x + 0.08, 1.3, rf"$Q = {passage.wheel_load / 1e3:g}$ kN", color="tab:red",
+                                     mutation_scale=12, color=VERMILLION, lw=1.6))
+        ax.text(x + 0.08, 1.3, rf"$Q = {passage.wheel_load / 1e3:g}$ kN", color=VERMILLION,
                 va="center")
     x_next = -0.35
     ax.add_patch(Circle((x_next, y_wheel), radius, facecolor="white", edgecolor="0.5", lw=1.2,
                         ls="--", gid="next-wheel", zorder=4))
     ax.add_patch(FancyArrowPatch((x_next, 1.55), (x_next, y_wheel + radius + 0.02),
-                                 arrowstyle="-|>", mutation_scale=12, color="tab:red", lw=1.0,
+                                 arrowstyle="-|>", mutation_scale=12, color=VERMILLION, lw=1.0,
                                  ls="--", alpha=0.6))
     ax.text(x_next + 0.08, 1.3, "next wagon", color="0.4", va="center", fontsize="small")
     _dimension(ax, wheel_x[0], wheel_x[1], 1.75, rf"$D = {passage.wheel_spacing:g}$ m")
@@ -141,8 +141,8 @@ def draw_track_schematic(passage: Passage, *, sleepers: int = 9, observed: int =
 
     # speed
     ax.add_patch(FancyArrowPatch((xo + 0.4, 1.85), (xo + 1.7, 1.85), arrowstyle="-|>",
-                                 mutation_scale=14, color="tab:blue", lw=1.8))
-    ax.text(xo + 1.05, 1.92, rf"$v = {passage.speed:g}$ m/s", color="tab:blue", ha="center",
+                                 mutation_scale=14, color=BLUE, lw=1.8))
+    ax.text(xo + 1.05, 1.92, rf"$v = {passage.speed:g}$ m/s", color=BLUE, ha="center",
             va="bottom")
     ax.text(right + 0.5, y_gr - 0.75, "not to scale", ha="right", va="bottom", fontsize="small",
             color="0.4", style="italic")

@@ -19,7 +19,7 @@ from matplotlib.figure import Figure
 from ..sleeper import rail_coupling
 from ..passage import Passage
 from ..load import load_coefficients
-from .style import new_figure
+from .style import BLUE, ORANGE, VERMILLION, new_figure, series_style
 
 __all__ = [
     "dirichlet_kernel",
@@ -88,8 +88,10 @@ def plot_dirichlet_kernel(orders: Sequence[int] = (2, 5, 20), periods: float = 1
     """
     u = np.linspace(-periods, periods, points)
     fig, ax = new_figure(width=7.0, height=3.2)
-    for order in orders:
-        ax.plot(u, dirichlet_kernel(2 * np.pi * u, order), lw=1.0,
+    for n, order in enumerate(orders):
+        # the last (narrowest, most ragged) sum solid and behind, the smooth first ones dashed
+        ax.plot(u, dirichlet_kernel(2 * np.pi * u, order), lw=1.2, zorder=2.0 + 0.1 * (len(orders) - n),
+                **series_style(len(orders) - 1 - n),
                 label=f"J = {order} ({2 * order + 1} wagons)", gid=f"kernel-{order}")
     ax.axhline(0.0, color="0.5", lw=0.6)
     ax.set_xlabel(r"$\omega T / 2\pi$ (the teeth sit at the harmonic numbers $n$)")
@@ -194,24 +196,24 @@ def plot_load_spectra(passage: Passage, harmonics: int = 15, points: int = 800) 
     zero = vanishing_harmonics(passage, harmonics)
 
     fig, (top, bottom) = new_figure(2, 1, width=7.0, height=2.7, sharex=True)
-    top.plot(nu, np.abs(P_c) / 1e6, color="0.6", lw=1.0, label=r"$|P(\omega)|$", gid="P-curve")
-    top.plot(n, np.abs(P_n) / 1e6, "o", color="tab:green", ms=5, label=r"$|P_n|$",
+    top.plot(nu, np.abs(P_c) / 1e6, "-", color="0.6", lw=1.0, label=r"$|P(\omega)|$", gid="P-curve")
+    top.plot(n, np.abs(P_n) / 1e6, "o", color=BLUE, ms=5, label=r"$|P_n|$",
              gid="P-harmonics")
-    top.axhline(passage.pad_natural_frequency_squared / 1e6, color="tab:blue", ls="--", lw=0.9,
+    top.axhline(passage.pad_natural_frequency_squared / 1e6, color=ORANGE, ls="--", lw=1.0,
                 label=r"$\omega_0^2 = k_1/M$")
     top.set_ylabel(r"$|P_n|$ [$10^6$ s$^{-2}$]")
     top.set_ylim(bottom=0.0)
 
-    bottom.plot(nu, np.abs(F_c), color="0.6", lw=1.0, label=r"$|F(\omega)|$", gid="F-curve")
-    bottom.plot(n, np.abs(F_n), "o", color="tab:purple", ms=5, label=r"$|F_n|$",
+    bottom.plot(nu, np.abs(F_c), "-", color="0.6", lw=1.0, label=r"$|F(\omega)|$", gid="F-curve")
+    bottom.plot(n, np.abs(F_n), "o", color=BLUE, ms=5, label=r"$|F_n|$",
                 gid="F-harmonics")
-    bottom.axhline(passage.static_load_per_sleeper / passage.sleeper_mass, color="tab:blue",
-                   ls="--", lw=0.9, label=r"$F_0 = 2QL/(MH)$")
-    bottom.plot(zero, np.zeros(len(zero)), "x", color="tab:red", ms=9, mew=2,
+    bottom.axhline(passage.static_load_per_sleeper / passage.sleeper_mass, color=ORANGE,
+                   ls="--", lw=1.0, label=r"$F_0 = 2QL/(MH)$")
+    bottom.plot(zero, np.zeros(len(zero)), "x", color=VERMILLION, ms=9, mew=2,
                 label=r"$F_n = 0$: wheels cancel (n = " + ", ".join(map(str, zero)) + ")",
                 gid="F-vanishing")
     for k in zero:
-        bottom.axvline(k, color="tab:red", ls=":", lw=0.8)
+        bottom.axvline(k, color=VERMILLION, ls=":", lw=0.8)
     bottom.set_ylabel(r"$|F_n|$ [m/s²]")
     bottom.set_xlabel(r"harmonic number $n$ ($\omega_n = 2\pi n v/H$)")
     bottom.set_ylim(bottom=-2.0)

@@ -17,7 +17,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from ..solve import solve
-from .style import MM, new_figure
+from .style import BLACK, BLUE, MM, ORANGE, PURPLE, VERMILLION, new_figure, series_style
 
 __all__ = ["lowest_over_speed", "peak_speed", "winkler_critical_speed", "lower_branch_bound",
            "smeared_critical_speed", "halved_spacing", "solution_counts", "branch_dips_at",
@@ -199,7 +199,10 @@ def ramp_on_branch(ramp, branch, samples: int = 4096) -> list[tuple[int, float] 
 
 def plot_speed_curves(speeds, curves: dict, *, marks: dict | None = None,
                       title: str | None = None) -> Figure:
-    """-min w [mm] over speed [m/s], one line per case, peaks dotted.
+    """-min w [mm] over speed [m/s], one line per case, peaks ringed.
+
+    Each case has its own colour, line style and marker; the marks are grey
+    dotted lines (one dot pattern each), so nothing is told apart by colour alone.
 
     Parameters
     ----------
@@ -212,13 +215,12 @@ def plot_speed_curves(speeds, curves: dict, *, marks: dict | None = None,
     title : str, optional
     """
     fig, ax = new_figure()
-    for label, lowest in curves.items():
+    for n, (label, lowest) in enumerate(curves.items()):
         lowest = np.asarray(lowest)
-        line, = ax.plot(speeds, -lowest * MM, label=label, gid=label)
-        v, w = peak_speed(speeds, lowest)
-        ax.plot([v], [-w * MM], "o", color=line.get_color(), ms=4)
-    for (label, v), style in zip((marks or {}).items(), (":", "--", "-.", (0, (1, 3)))):
-        ax.axvline(v, color="0.3", ls=style, lw=1, label=label)
+        line, = ax.plot(speeds, -lowest * MM, label=label, gid=label,
+                        **series_style(n, len(curves), points=len(lowest), marker=True))
+        _ring_peak(ax, speeds, lowest, line)
+    _mark_speeds(ax, marks)
     ax.set_xlabel("train speed v [m/s]")
     ax.set_ylabel("largest sleeper dip −min w [mm]")
     ax.set_ylim(bottom=0)
@@ -227,6 +229,21 @@ def plot_speed_curves(speeds, curves: dict, *, marks: dict | None = None,
     if title:
         ax.set_title(title, fontsize=10)
     return fig
+
+
+MARK_STYLES = (":", (0, (1, 3)), (0, (3, 1, 1, 1, 1, 1)), (0, (1, 1, 1, 4)))
+"""Dot patterns of the grey vertical marks, kept apart from the curves' line styles."""
+
+
+def _mark_speeds(ax, marks: dict | None) -> None:
+    for (label, v), style in zip((marks or {}).items(), MARK_STYLES):
+        ax.axvline(v, color="0.3", ls=style, lw=1, label=label)
+
+
+def _ring_peak(ax, speeds, lowest, line) -> None:
+    """An open ring of the line's colour at the refined peak of -lowest (`peak_speed`)."""
+    v, w = peak_speed(speeds, lowest)
+    ax.plot([v], [-w * MM], "o", mfc="white", mec=line.get_color(), mew=1.3, ms=6.5, zorder=3)
 
 
 def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = None) -> Figure:
@@ -244,25 +261,31 @@ def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = Non
         The linear law's min w [m] over speeds [m/s] for comparison.
     ramps : dict, optional
         Label -> `railtrack.SpeedRamp`: the ring's steady dips along rising or
-        falling speeds, joined in the order run; a cross where the response
-        did not repeat (its dip over the last period run).
+        falling speeds, joined in the order run, each ramp in its own colour,
+        line style and marker (the first, ▶, for a rising ramp, the second,
+        ◀, for a falling one); a cross (x for the first, + for the second)
+        where the response did not repeat (its dip over the last period run).
+
+    Folds are black diamonds; the linear law is grey and dashed.
     """
     fig, ax = new_figure()
     dip = -branch.minimum_displacement() * MM
     if branch.stable is None:
-        ax.plot(branch.values, dip, "-", lw=1.5, label="cubic law, continued branch", gid="branch")
+        ax.plot(branch.values, dip, "-", color=BLUE, lw=1.5, label="cubic law, continued branch",
+                gid="branch")
     else:
         for flag, style, label in ((True, "-", "stable"), (False, ":", "unstable")):
             drawn = branch.stable == flag
             drawn[1:] |= drawn[:-1].copy()   # one point on, so that the pieces meet
             shown = np.where(drawn, dip, np.nan)
-            ax.plot(branch.values, shown, style, color="C0", lw=1.5,
+            ax.plot(branch.values, shown, style, color=BLUE, lw=1.5,
                     label=f"branch, {label} (ring)", gid=f"branch-{label}")
         checked = np.array(sorted(branch.checks))
-        ax.plot(branch.values[checked], dip[checked], "o", mfc="none", color="C0", ms=5,
+        ax.plot(branch.values[checked], dip[checked], "o", mfc="none", color=BLUE, ms=5,
                 label="checked by the ring", gid="checked")
     indices = [fold.index for fold in branch.folds]
-    ax.plot(branch.values[indices], dip[indices], "rv", ms=6, label="folds", gid="folds")
+    ax.plot(branch.values[indices], dip[indices], "D", color=BLACK, ms=5, label="folds",
+            gid="folds", zorder=4)
     for n, i in enumerate(indices, 1):
         ax.annotate(f"{n}: {branch.values[i]:.1f}", (branch.values[i], dip[i]), fontsize=7,
                     xytext=(4, 4 if n % 2 else -10), textcoords="offset points")
@@ -270,18 +293,25 @@ def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = Non
         ax.plot(linear[0], -np.asarray(linear[1]) * MM, "--", color="0.4",
                 label="linear law (same k2, η2)", gid="linear")
     for n, (label, ramp) in enumerate((ramps or {}).items()):
-        ramp_dip, periodic = -ramp.minimum * MM, np.asarray(ramp.converged)
-        ax.plot(ramp.speeds, ramp_dip, "-", color=f"C{n + 1}", lw=0.8, alpha=0.8)
-        ax.plot(ramp.speeds[periodic], ramp_dip[periodic], "^v<>"[n % 4], color=f"C{n + 1}",
-                ms=5, label=label, gid=f"ramp-{n}")
+        colour, marker, cross, style = _RAMP_STYLES[n % len(_RAMP_STYLES)]
+        ramp_dip, periodic = -ramp.minimum * MM, np.asarray(ramp.converged, bool)
+        ax.plot(ramp.speeds, ramp_dip, ls=style, color=colour, lw=0.9, marker=marker, ms=5,
+                markevery=list(periodic), label=label, gid=f"ramp-{n}")
         if not periodic.all():
-            ax.plot(ramp.speeds[~periodic], ramp_dip[~periodic], "x", color=f"C{n + 1}", ms=6,
-                    label=f"{label}: no periodic state (last period)", gid=f"ramp-{n}-aperiodic")
+            ax.plot(ramp.speeds[~periodic], ramp_dip[~periodic], cross, color=colour, ms=7,
+                    mew=1.5, label=f"{label}: no periodic state (last period)",
+                    gid=f"ramp-{n}-aperiodic")
     ax.set_xlabel("train speed v [m/s]")
     ax.set_ylabel("largest sleeper dip −min w [mm]")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     return fig
+
+
+_RAMP_STYLES = ((ORANGE, ">", "x", "-"), (PURPLE, "<", "+", "--"),
+                (VERMILLION, "^", "1", "-."), (BLACK, "v", "2", (0, (6, 2))))
+"""Colour, marker of a periodic state, marker of an aperiodic one and line style of each ramp:
+a rising ramp (the first) points right, a falling one left."""
 
 
 def plot_seat_load_histogram(ratio, *, bins: int = 60, quantiles=(0.05, 0.95)) -> Figure:
@@ -297,10 +327,10 @@ def plot_seat_load_histogram(ratio, *, bins: int = 60, quantiles=(0.05, 0.95)) -
     """
     ratio = np.asarray(ratio, float)
     fig, ax = new_figure()
-    ax.hist(ratio, bins=bins, color="C0", alpha=0.75, gid="histogram")
-    ax.axvline(ratio.mean(), color="k", lw=1.2, label=f"mean {ratio.mean():.3f}")
+    ax.hist(ratio, bins=bins, color=BLUE, alpha=0.75, gid="histogram")
+    ax.axvline(ratio.mean(), color=BLACK, lw=1.2, label=f"mean {ratio.mean():.3f}")
     for q in quantiles:
-        ax.axvline(np.quantile(ratio, q), color="C3", ls="--", lw=1,
+        ax.axvline(np.quantile(ratio, q), color=VERMILLION, ls="--", lw=1,
                    label=f"{100 * q:g} % quantile {np.quantile(ratio, q):.3f}")
     ax.set_xlabel("peak rail-seat load / wheel load [-]")
     ax.set_ylabel("members")

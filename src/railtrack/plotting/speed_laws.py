@@ -14,8 +14,8 @@ from matplotlib.figure import Figure
 
 from ..foundations import BilinearFoundation, CubicFoundation, LinearFoundation
 from ..sweep import sweep
-from .speed import peak_speed
-from .style import MM, new_figure
+from .speed import _ring_peak, peak_speed
+from .style import MM, new_figure, series_style
 
 __all__ = ["foundation_laws", "law_curves", "law_peaks", "secant_stiffness", "plot_law_curves"]
 
@@ -137,7 +137,9 @@ def secant_stiffness(solution, samples: int = 2048) -> tuple[float, float, float
 
 
 def plot_law_curves(speeds, curves: dict, *, title: str | None = None) -> Figure:
-    """Dip -min w and uplift max w [mm] over speed [m/s], one line per law, peaks dotted.
+    """Dip -min w and uplift max w [mm] over speed [m/s], one line per law, peaks ringed.
+
+    Each law keeps its colour, line style and marker in both panels.
 
     Parameters
     ----------
@@ -148,13 +150,12 @@ def plot_law_curves(speeds, curves: dict, *, title: str | None = None) -> Figure
     title : str, optional
     """
     fig, axes = new_figure(2, 1, sharex=True, height=3.0)
-    for label, curve in curves.items():
-        peaks = law_peaks(speeds, curve)
-        for ax, key, values in ((axes[0], "dip", -np.asarray(curve["lowest"])),
-                                (axes[1], "uplift", np.asarray(curve["highest"]))):
-            line, = ax.plot(speeds, values * MM, label=label, gid=f"{label}: {key}")
-            v, w = peaks[key]
-            ax.plot([v], [w * MM], "o", color=line.get_color(), ms=4)
+    for n, (label, curve) in enumerate(curves.items()):
+        style = series_style(n, len(curves), points=len(speeds), marker=True)
+        for ax, key, lowest in ((axes[0], "dip", np.asarray(curve["lowest"])),
+                                (axes[1], "uplift", -np.asarray(curve["highest"]))):
+            line, = ax.plot(speeds, -lowest * MM, label=label, gid=f"{label}: {key}", **style)
+            _ring_peak(ax, speeds, lowest, line)
     axes[0].set_ylabel("deepest dip −min w [mm]")
     axes[1].set_ylabel("highest uplift max w [mm]")
     axes[1].set_xlabel("train speed v [m/s]")

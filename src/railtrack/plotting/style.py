@@ -1,8 +1,16 @@
-"""Units, axis labels and the shared look of the book's figures."""
+"""Units, axis labels and the shared look of the book's figures.
+
+The look is meant to be read without colour: the palette is the
+colour-blind-safe one of Okabe and Ito (2008), and any two series in one
+axes also differ in line style or marker (`series_style`), so that a
+reader with a red-green deficiency, or a grey-scale print, tells them
+apart.  Every axes made by `new_figure` cycles through `BOOK_CYCLE`.
+"""
 
 from __future__ import annotations
 
 import matplotlib.pyplot as plt
+from cycler import cycler
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
@@ -10,6 +18,18 @@ __all__ = [
     "MM",
     "DISPLACEMENT_LABEL",
     "TIME_LABEL",
+    "BLACK",
+    "ORANGE",
+    "SKY_BLUE",
+    "GREEN",
+    "BLUE",
+    "VERMILLION",
+    "PURPLE",
+    "PALETTE",
+    "LINESTYLES",
+    "MARKERS",
+    "BOOK_CYCLE",
+    "series_style",
     "new_figure",
     "label_displacement_axes",
     "plot_sweep",
@@ -21,12 +41,79 @@ MM = 1e3
 DISPLACEMENT_LABEL = "sleeper displacement w [mm] (up > 0)"
 TIME_LABEL = "time t [s] (t = 0: front wheel above the sleeper)"
 
+# The Okabe-Ito palette (Okabe & Ito 2008, "Color Universal Design"); its
+# yellow (#F0E442) is left out, too pale for a line on white.
+BLACK = "#000000"
+ORANGE = "#E69F00"
+SKY_BLUE = "#56B4E9"
+GREEN = "#009E73"       # bluish green
+BLUE = "#0072B2"
+VERMILLION = "#D55E00"
+PURPLE = "#CC79A7"      # reddish purple
+
+PALETTE = (BLUE, ORANGE, GREEN, VERMILLION, PURPLE, SKY_BLUE, BLACK)
+"""The book's colours for series, in the order used."""
+
+LINESTYLES = ("-", "--", "-.", (0, (4, 1.5, 1, 1.5, 1, 1.5)), (0, (7, 2)), (0, (1, 1.2)),
+              (0, (7, 1.5, 1, 1.5)))
+"""Solid, dashed, dash-dot, dash-dot-dot, long dash, dense dots, long dash-dot."""
+
+MARKERS = ("o", "s", "^", "D", "v", "P", "X")
+"""Circle, square, triangle up, diamond, triangle down, plus, cross (filled)."""
+
+BOOK_CYCLE = cycler(color=PALETTE) + cycler(linestyle=LINESTYLES)
+"""The property cycle of the book's axes: each series a new colour and a new line style."""
+
+
+def series_style(index: int, count: int | None = None, *, points: int | None = None,
+                 linestyle: bool = True, marker: bool = False, markers_per_line: int = 9) -> dict:
+    """Keyword arguments for ``ax.plot`` of series `index` of several in one axes.
+
+    Colour, line style and (optionally) marker all change from one series to
+    the next, so that no two series differ by colour alone.
+
+    Parameters
+    ----------
+    index : int
+        Which series (0, 1, ...).
+    count : int, optional
+        How many series share the axes; staggers the markers of different
+        series so that they do not sit on top of one another.
+    points : int, optional
+        Samples of the line; with `marker`, only about `markers_per_line`
+        of them carry a marker.
+    linestyle : bool
+        Vary the line style (else solid).
+    marker : bool
+        Add a marker.
+    markers_per_line : int
+
+    Examples
+    --------
+    >>> series_style(1)
+    {'color': '#E69F00', 'linestyle': '--'}
+    >>> series_style(0, 2, points=100, linestyle=False, marker=True)["markevery"]
+    (0, 11)
+    """
+    style = dict(color=PALETTE[index % len(PALETTE)],
+                 linestyle=LINESTYLES[index % len(LINESTYLES)] if linestyle else "-")
+    if marker:
+        style.update(marker=MARKERS[index % len(MARKERS)], markersize=4)
+        if points is not None:
+            step = max(points // markers_per_line, 1)
+            style["markevery"] = ((index * step) // max(count or 1, 1) % step, step)
+    return style
+
 
 def new_figure(rows: int = 1, cols: int = 1, *, width: float = 7.0, height: float = 3.6,
                **kwargs) -> tuple[Figure, Axes]:
-    """A figure of the book's size with `rows` x `cols` axes (constrained layout)."""
-    fig, axes = plt.subplots(rows, cols, figsize=(width, height * rows), layout="constrained",
-                             **kwargs)
+    """A figure of the book's size with `rows` x `cols` axes (constrained layout).
+
+    The axes cycle through `BOOK_CYCLE` (colour and line style together).
+    """
+    with plt.rc_context({"axes.prop_cycle": BOOK_CYCLE}):
+        fig, axes = plt.subplots(rows, cols, figsize=(width, height * rows),
+                                 layout="constrained", **kwargs)
     return fig, axes
 
 

@@ -19,7 +19,7 @@ import numpy as np
 from matplotlib import animation
 from matplotlib.figure import Figure
 
-from .style import MM, new_figure
+from .style import BLUE, MM, VERMILLION, new_figure, series_style
 
 __all__ = ["GRAVITY", "support_stiffness", "winkler_parameters", "wheel_positions", "winkler_bowl",
            "winkler_moment", "static_bowl", "bowl_uplift", "LoadHistories", "load_histories",
@@ -193,10 +193,10 @@ def richardson(m1: int, value1: float, m2: int, value2: float) -> float:
 
 def draw_bowl(ax, x, rail, sleeper_positions, sleepers, wheels, static=None):
     """Draw one instant of the bowl on `ax` in mm against m; return the artists (rail, sleepers, wheels)."""
-    (line,) = ax.plot(x, rail * MM, color="C0", lw=1.6, label="rail", gid="rail")
+    (line,) = ax.plot(x, rail * MM, "-", color=BLUE, lw=1.6, label="rail", gid="rail")
     (dots,) = ax.plot(sleeper_positions, sleepers * MM, "s", color="0.45", ms=3.5,
                       label="sleepers", gid="sleepers")
-    (marks,) = ax.plot(wheels, np.zeros_like(wheels) + 0.15, "v", color="C3", ms=8,
+    (marks,) = ax.plot(wheels, np.zeros_like(wheels) + 0.15, "v", color=VERMILLION, ms=8,
                        label="wheels", gid="wheels")
     if static is not None:
         ax.plot(x, static * MM, "k--", lw=1, label="static Winkler beam", gid="winkler")
@@ -270,9 +270,9 @@ def offline_jshtml(anim, **kwargs) -> str:
 def plot_load_histories(histories: dict, wheel_load: float) -> Figure:
     """Rail-seat load (top) and foundation force (bottom) [kN] over one period, one line per case."""
     fig, axes = new_figure(2, 1, height=2.8, sharex=True)
-    for (label, h), style in zip(histories.items(), ("-", "--", "-.", ":")):
-        axes[0].plot(h.t, h.rail_seat / 1e3, ls=style, label=label, gid=label)
-        axes[1].plot(h.t, h.foundation / 1e3, ls=style, label=label, gid=label)
+    for n, (label, h) in enumerate(histories.items()):
+        axes[0].plot(h.t, h.rail_seat / 1e3, label=label, gid=label, **series_style(n))
+        axes[1].plot(h.t, h.foundation / 1e3, label=label, gid=label, **series_style(n))
     for ax, name in zip(axes, ("rail-seat load [kN]", "foundation force [kN]")):
         ax.set_ylabel(f"{name}\n(compression > 0)")
         ax.axhline(0.0, color="0.6", lw=0.6)
@@ -290,8 +290,10 @@ def plot_moments(solutions: dict, samples: int = 800) -> Figure:
     for ax, (label, s) in zip(np.atleast_1d(axes), solutions.items()):
         t = np.linspace(0.0, s.period, samples, endpoint=False)
         half = float(s.passage.sleeper_spacing) / 2.0
-        ax.plot(t, s.rail_bending_moment(t, 0.0) / 1e3, label="above a sleeper (x = 0)", gid="sleeper")
-        ax.plot(t, s.rail_bending_moment(t, half) / 1e3, "--", label="mid-span (x = L/2)", gid="midspan")
+        ax.plot(t, s.rail_bending_moment(t, 0.0) / 1e3, label="above a sleeper (x = 0)", gid="sleeper",
+                **series_style(0))
+        ax.plot(t, s.rail_bending_moment(t, half) / 1e3, label="mid-span (x = L/2)", gid="midspan",
+                **series_style(1))
         ax.set(ylabel="M [kN m]\n(sagging > 0)", title=f"{label}, m = {s.harmonics}")
         ax.grid(True, alpha=0.3)
     np.atleast_1d(axes)[-1].set_xlabel("time t [s] (t = 0: front wheel above the sleeper)")

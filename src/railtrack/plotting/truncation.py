@@ -19,7 +19,7 @@ from matplotlib.ticker import NullFormatter
 from ..solution import TruncationWarning
 from ..solve import solve
 from ..passage import Passage
-from .style import new_figure
+from .style import BLUE, ORANGE, new_figure
 from .tables import markdown_table
 
 __all__ = ["TruncationStudy", "truncation_study", "truncation_table", "plot_truncation"]
@@ -101,14 +101,16 @@ def truncation_table(study: TruncationStudy) -> str:
 def plot_truncation(study: TruncationStudy) -> Figure:
     """Left: error at m = 15 (true and estimated) against H; right: the m that "auto" picks."""
     fig, (left, right) = new_figure(1, 2, width=8.0, height=3.4)
-    left.loglog(study.wagon_lengths, 100 * study.error_15, "o-", label="true (against reference)")
-    left.loglog(study.wagon_lengths, 100 * study.estimate_15, "x--", label="estimated")
+    left.loglog(study.wagon_lengths, 100 * study.error_15, "o-", color=BLUE,
+                label="true (against reference)")
+    left.loglog(study.wagon_lengths, 100 * study.estimate_15, "x--", color=ORANGE, label="estimated")
     left.set_xticks(study.wagon_lengths, [f"{h:g}" for h in study.wagon_lengths])
     left.xaxis.set_minor_formatter(NullFormatter())
     left.set_xlabel("wagon length H [m]")
     left.set_ylabel("error of w at m = 15 [% of peak]")
     left.legend()
-    right.plot(study.spans, study.auto_harmonics, "o-", label=f"m for accuracy {study.accuracy:.0e}")
+    right.plot(study.spans, study.auto_harmonics, "o-", color=BLUE,
+               label=f"m for accuracy {study.accuracy:.0e}")
     right.plot(study.spans, np.full_like(study.spans, 15.0), "k:", label="the paper's m = 15")
     right.set_xlabel("harmonics per sleeper passing, H / L")
     right.set_ylabel("harmonics m")

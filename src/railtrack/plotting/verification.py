@@ -23,7 +23,7 @@ from matplotlib.figure import Figure
 from .. import BilinearFoundation, CubicFoundation, LinearFoundation, Passage, solve
 from ..timedomain import TimeDomainSolution, simulate_time_domain
 from .model import markdown_table
-from .style import DISPLACEMENT_LABEL, MM, TIME_LABEL, new_figure
+from .style import BLUE, DISPLACEMENT_LABEL, GREEN, MM, ORANGE, TIME_LABEL, VERMILLION, new_figure
 
 __all__ = ["METHODS", "CaseComparison", "paper_cases", "compare_case", "fe_against_harmonics",
            "comparison_table", "truncation_table", "distinct_cases", "plot_comparison", "plot_error_budget",
@@ -192,7 +192,7 @@ def plot_comparison(cases: Sequence[CaseComparison], zoom: int = 25) -> Figure:
 
     Cases with the same response (`distinct_cases`) share a row, titled
     with all their labels.  FE: thick grey; Newton m = 200: dashed black;
-    Newton m = 15: thin orange.
+    Newton m = 15: thin vermillion, dash-dot.
 
     Parameters
     ----------
@@ -209,8 +209,8 @@ def plot_comparison(cases: Sequence[CaseComparison], zoom: int = 25) -> Figure:
     groups = distinct_cases(cases)
     fig, axes = new_figure(len(groups), 2, width=7.5, height=1.9, squeeze=False,
                            gridspec_kw=dict(width_ratios=(1.7, 1.0)))
-    styles = {"fe": dict(color="0.7", lw=4.0), "reference": dict(color="black", ls="--", lw=1.0),
-              "newton": dict(color="tab:orange", lw=1.0)}
+    styles = {"fe": dict(color="0.7", ls="-", lw=4.0), "reference": dict(color="black", ls="--", lw=1.0),
+              "newton": dict(color=VERMILLION, ls="-.", lw=1.1)}
     for (full, detail), group in zip(axes, groups):
         case = group[0]
         trough = int(np.argmin(case.curves["reference"]))
@@ -235,13 +235,14 @@ def plot_comparison(cases: Sequence[CaseComparison], zoom: int = 25) -> Figure:
 def plot_error_budget(cases: Sequence[CaseComparison]) -> Figure:
     """max |error| [mm] of each approximation, per case, on a log scale."""
     fig, ax = new_figure(height=3.4)
-    errors = {"FE (defaults) − Newton m = 200": ([c.error("fe") for c in cases], "s"),
-              "m = 15 truncation: Newton m = 15 − m = 200": ([c.error("newton") for c in cases], "o"),
+    errors = {"FE (defaults) − Newton m = 200": ([c.error("fe") for c in cases], "s", BLUE),
+              "m = 15 truncation: Newton m = 15 − m = 200":
+                  ([c.error("newton") for c in cases], "o", ORANGE),
               "k = 100 iteration: fixed point − Newton m = 15":
-                  ([c.error("paper", "newton") for c in cases], "^")}
+                  ([c.error("paper", "newton") for c in cases], "^", GREEN)}
     x = np.arange(len(cases))
-    for shift, (label, (values, marker)) in zip((-0.15, 0.0, 0.15), errors.items()):
-        ax.semilogy(x + shift, np.array(values) * MM, marker, ms=7, label=label)
+    for shift, (label, (values, marker, colour)) in zip((-0.15, 0.0, 0.15), errors.items()):
+        ax.semilogy(x + shift, np.array(values) * MM, marker, color=colour, ms=7, label=label)
     ax.set_xticks(x, [c.label for c in cases], rotation=25, ha="right", fontsize=8)
     ax.set_ylabel("max over t of |error| [mm]")
     ax.set_ylim(top=10.0)  # room for the legend above the points
@@ -313,7 +314,7 @@ def plot_convergence(study: ConvergenceStudy) -> Figure:
               (np.array(study.steps), study.step_errors, 2,
                "steps per period (dt = T / steps)", f"{study.fixed_elements} elements per span"))
     for ax, (n, errors, order, xlabel, title) in zip(axes, panels):
-        ax.loglog(n, errors * MM, "o-", label="FE error")
+        ax.loglog(n, errors * MM, "o-", color=BLUE, label="FE error")
         ax.loglog(n, errors[0] * MM * (n / n[0]) ** -order, "k:", label=f"slope −{order}")
         ax.axhline(study.reference_error * MM, color="0.5", lw=0.8, ls="--",
                    label=f"eq. (23) at m = 200 vs m = {study.reference_harmonics}")
