@@ -10,6 +10,9 @@
 #   make pdf     the book as PDF, solutions in an appendix, and the student edition's
 #                PDF, into _build/pdf (headless Chromium prints a single-page build)
 #   make lab     JupyterLab on the book's notebooks with the project's kernel
+#   make test-roundoff  nbval over every notebook with every Track's masses,
+#                stiffnesses and dampings changed by 1e-12 and two BLAS threads:
+#                a printed digit that changes is decided by round-off
 #   make bench   run benchmarks/bench.py
 #   make clean   remove _build
 #
@@ -46,7 +49,7 @@ export JUPYTER_PREFER_ENV_PATH := 1
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 unexport VIRTUAL_ENV PYTHONPATH PYTHONHOME
 
-.PHONY: help venv book book-student pdf lab test bench clean distclean
+.PHONY: help venv book book-student pdf lab test test-roundoff bench clean distclean
 
 help:
 	@echo "make book   - build the HTML book into _build/html (re-executes every notebook)"
@@ -54,6 +57,7 @@ help:
 	@echo "make book-student - the book without solutions, into _build/student"
 	@echo "make pdf    - the book and its student edition as PDF, into _build/pdf"
 	@echo "make lab    - JupyterLab on the notebooks (http://127.0.0.1:$(LAB_PORT)/lab)"
+	@echo "make test-roundoff - the notebooks re-run with every Track perturbed by 1e-12"
 	@echo "make bench  - run benchmarks/bench.py"
 	@echo "make clean  - remove _build (make distclean also removes .venv and MathJax)"
 
@@ -154,6 +158,21 @@ test: $(STAMP) $(MATHJAX)
 	  $(PY) tools/editions.py check-student $(STUDENT)/_build/html; } || status=1; \
 	if [ $$status -ne 0 ]; then echo "make test: FAILED" >&2; fi; \
 	exit $$status
+
+# The round-off probe (tests/roundoff/sitecustomize.py): every notebook re-run
+# with the masses, stiffnesses and dampings of every Track changed by 1e-12
+# (relative) and BLAS on two threads, compared by nbval with the stored
+# outputs.  A printed digit that changes here is decided by round-off and
+# would differ on another machine.  As long as make test's notebooks (about
+# 8 minutes on 2 cores), so it is not part of make test.
+ROUNDOFF_PROBE ?= 1e-12
+test-roundoff: $(STAMP) $(MATHJAX)
+	notebooks=$$(find book -name '*.ipynb' -not -path '*/.ipynb_checkpoints/*' -not -path '*/_build/*' | sort); \
+	PYTHONPATH=$(CURDIR)/tests/roundoff RAILTRACK_ROUNDOFF_PROBE=$(ROUNDOFF_PROBE) \
+	OMP_NUM_THREADS=2 OPENBLAS_NUM_THREADS=2 MKL_NUM_THREADS=2 \
+	  $(PY) -m pytest -p no:cacheprovider -n $(TEST_WORKERS) --dist loadscope $$notebooks \
+	    --nbval --nbval-current-env --nbval-sanitize-with $(SANITIZE) \
+	    --nbval-cell-timeout=$(NB_TIMEOUT)
 
 bench: $(STAMP)
 	$(PY) benchmarks/bench.py
