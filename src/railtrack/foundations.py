@@ -95,10 +95,10 @@ class LinearFoundation:
         return self.stiffness * np.asarray(w) + self.damping * np.asarray(v)
 
     def tangent(self, w, v):
-        shape = np.broadcast_shapes(np.shape(w), np.shape(v), np.shape(self.stiffness),
-                                    np.shape(self.damping))
-        return (np.broadcast_to(np.asarray(self.stiffness, dtype=float), shape),
-                np.broadcast_to(np.asarray(self.damping, dtype=float), shape))
+        return _tangent_pair(np.broadcast_to(np.asarray(self.stiffness, dtype=float),
+                                             np.broadcast_shapes(np.shape(w),
+                                                                 np.shape(self.stiffness))),
+                             self.damping, v)
 
     def linearization(self) -> tuple[float, float]:
         return float(self.stiffness), float(self.damping)
@@ -151,10 +151,7 @@ class BilinearFoundation:
         return self._stiffness(w) * np.asarray(w) + self.damping * np.asarray(v)
 
     def tangent(self, w, v):
-        stiffness = np.asarray(self._stiffness(w), dtype=float)
-        shape = np.broadcast_shapes(stiffness.shape, np.shape(v), np.shape(self.damping))
-        return (np.broadcast_to(stiffness, shape),
-                np.broadcast_to(np.asarray(self.damping, dtype=float), shape))
+        return _tangent_pair(self._stiffness(w), self.damping, v)
 
     def linearization(self) -> tuple[float, float]:
         # The train compresses the foundation on average.
@@ -205,9 +202,7 @@ class CubicFoundation:
     def tangent(self, w, v):
         w = np.asarray(w)
         stiffness = self.stiffness + 3.0 * self.epsilon * self.cubic_stiffness * w * w
-        shape = np.broadcast_shapes(np.shape(stiffness), np.shape(v), np.shape(self.damping))
-        return (np.broadcast_to(stiffness, shape),
-                np.broadcast_to(np.asarray(self.damping, dtype=float), shape))
+        return _tangent_pair(stiffness, self.damping, v)
 
     def linearization(self) -> tuple[float, float]:
         return float(self.stiffness), float(self.damping)
@@ -260,6 +255,20 @@ class CallableFoundation:
     def linearization(self) -> tuple[float, float]:
         stiffness, damping = self.tangent(np.zeros(1), np.zeros(1))
         return float(stiffness[0]), float(damping[0])
+
+
+def _tangent_pair(stiffness, damping, v) -> tuple[np.ndarray, np.ndarray]:
+    """(df/dw, df/dw') broadcast to one shape [N/m], [N s/m].
+
+    The time-domain ring asks for this several times per step with w and v
+    of one shape and a scalar damping: that case skips the broadcasting.
+    """
+    stiffness = np.asarray(stiffness, dtype=float)
+    if np.ndim(damping) == 0 and stiffness.shape == np.shape(v):
+        return stiffness, np.full(stiffness.shape, float(damping))
+    shape = np.broadcast_shapes(stiffness.shape, np.shape(v), np.shape(damping))
+    return (np.broadcast_to(stiffness, shape),
+            np.broadcast_to(np.asarray(damping, dtype=float), shape))
 
 
 def _preview(value) -> str:
