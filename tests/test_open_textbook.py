@@ -27,30 +27,41 @@ AUTHORS = "the railtrack contributors"
 # Entries of references.bib without a DOI or URL, each with its reason.
 # Books that have no DOI at all:
 NO_DOI = {
-    "hetenyi1946": "a 1946 book (University of Michigan Press); no DOI",
-    "kreyszig2011": "a textbook (Wiley, 10th edition); no DOI",
-    "rao2017": "a textbook (Pearson, 6th edition); no DOI",
+    "hetenyi1946": "a 1946 book (University of Michigan Press); no DOI, and no "
+                   "publisher page for this edition found",
 }
 # Works that very likely have a DOI or an open-archive copy which could not be
-# verified from the machine this list was written on (no network; the search
-# index did not hold them). Add the DOI once checked at doi.org, and remove
-# the entry here: the test below fails while both are present.
+# verified from the machine this list was written on (no network). The stored
+# search corpora (web pages, code, docs, issue threads) were searched for the
+# title and for the DOI we expected; none printed the DOI next to the work.
+# Add the DOI once checked at doi.org, and remove the entry here: the test
+# below fails while both are present.
 NOT_YET_VERIFIED = {
-    "hoang2014tunnel": "conference paper (WCCM XI, 2014): no DOI; a HAL copy not found",
-    "mead1970": "J. Sound Vib. 11(2), 1970: DOI not verified",
-    "mead1996": "J. Sound Vib. 190(3), 1996: DOI not verified",
-    "sheng2005": "J. Sound Vib. 282, 2005: DOI not verified",
-    "chen2011": "Int. J. Non-Linear Mech. 46(1), 2011: DOI not verified",
-    "nguyen2008": "Comput. Struct. 86, 2008: DOI not verified",
-    "cameron1989": "J. Appl. Mech. 56(1), 1989: DOI not verified",
-    "fryba1972": "the 1972 Noordhoff edition: a DOI of its Springer reprint not verified",
-    "nayfeh1993": "Wiley, 1993: a DOI of its online edition not verified",
+    "hoang2014tunnel": "conference paper (WCCM XI, 2014): no DOI; no HAL copy found",
+    "mead1970": "J. Sound Vib. 11(2), 1970: the article's own pages were found, "
+                "its DOI (expected 10.1016/S0022-460X(70)80062-1) in no source",
+    "mead1996": "J. Sound Vib. 190(3), 1996: the article's own pages were found, "
+                "its DOI (expected 10.1006/jsvi.1996.0076) in no source",
+    "sheng2005": "J. Sound Vib. 282, 2005: DOI in no searched source",
+    "chen2011": "Int. J. Non-Linear Mech. 46(1), 2011: DOI in no searched source",
+    "nguyen2008": "Comput. Struct. 86, 2008 (Part II, infinite beam under moving "
+                  "harmonic loads): DOI (expected 10.1016/j.compstruc.2008.04.010) "
+                  "in no source",
+    "fryba1972": "the 1972 Noordhoff edition: the DOI of its Springer reprint "
+                 "(expected 10.1007/978-94-011-9685-7) in no source",
+    "nayfeh1993": "Wiley, 1993: a DOI of its online edition in no searched source",
 }
-# Links verified for this list (the paper's own HAL header, and DOIs found in
-# the sources named in the commit that added them).
+# Links verified for this list (the paper's own HAL header, and DOIs or pages
+# found in the sources named in the commit that added them).
 KNOWN = {
     "hoang2015fast": ("url", "https://hal.archives-ouvertes.fr/hal-01266403"),
     "madshus2000": ("doi", "10.1006/jsvi.1999.2647"),
+    "cameron1989": ("url", "https://hal.archives-ouvertes.fr/hal-01333697"),
+    "kreyszig2011": ("url", "https://www.wiley.com/en-us/Advanced+Engineering+"
+                            "Mathematics%2C+10th+Edition-p-9780470458365"),
+    "rao2017": ("url", "https://www.pearson.com/en-us/subject-catalog/p/"
+                       "Rao-Mechanical-Vibrations-6th-Edition/P200000003425/"
+                       "9780134361307"),
 }
 
 
