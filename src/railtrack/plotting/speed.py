@@ -16,6 +16,7 @@ import dataclasses
 import numpy as np
 from matplotlib.figure import Figure
 
+from ..dispersion import smeared_phase_speed
 from ..solve import solve
 from .style import BLACK, BLUE, MM, ORANGE, PURPLE, VERMILLION, new_figure, series_style
 
@@ -101,15 +102,12 @@ def lower_branch_bound(track, foundation) -> float:
 def smeared_critical_speed(track, foundation, wavenumbers=None) -> float:
     """Critical speed of the smeared track with the sleeper's mass [m/s] (NaN if none).
 
-    The rail (rho S, EI) rests on a pad k1 / L, a mass M / L and a
-    foundation k2 / L per metre, undamped.  A free wave exp(i(beta x - omega t))
-    has x = omega^2 solving
-    (EI beta^4 - rho S x)(k1 + k2 - M x) + (k1 / L)(k2 - M x) = 0.
-    A load moving at v excites the waves with omega = v beta; resonance is
-    where that line touches the lower branch, the first local minimum of its
-    phase speed omega / beta.  With M -> 0 it is `winkler_critical_speed`.
+    A load moving at v excites the free waves with omega = v kappa; resonance
+    is where that line touches the lower branch of
+    `railtrack.dispersion.smeared_phase_speed`, at the first local minimum of
+    its phase speed omega / kappa.  With M -> 0 it is `winkler_critical_speed`.
     The lower branch stays below `lower_branch_bound`, so its phase speed
-    falls to 0 at large beta; if it has no local minimum before that, there
+    falls to 0 at large kappa; if it has no local minimum before that, there
     is no tangency and NaN is returned.
 
     Parameters
@@ -117,16 +115,11 @@ def smeared_critical_speed(track, foundation, wavenumbers=None) -> float:
     track : Track
     foundation : a law with ``linearization()``
     wavenumbers : array_like, optional
-        Increasing beta to search [1/m] (default 20000 points from 0.05 to 20).
+        Increasing kappa to search [rad/m] (default 20000 points from 0.05 to 20).
     """
-    beta = (np.linspace(0.05, 20.0, 20000) if wavenumbers is None
-            else np.asarray(wavenumbers, float))
-    k1, k2 = float(track.pad_stiffness), float(foundation.linearization()[0])
-    rho, ei = float(track.rail_linear_mass), float(track.rail_bending_stiffness)
-    m, spacing = float(track.sleeper_mass), float(track.sleeper_spacing)
-    a, c = ei * beta ** 4, k1 + k2
-    qa, qb, qc = rho * m, a * m + rho * c + k1 * m / spacing, a * c + k1 * k2 / spacing
-    phase = np.sqrt((qb - np.sqrt(qb ** 2 - 4.0 * qa * qc)) / (2.0 * qa)) / beta
+    kappa = (np.linspace(0.05, 20.0, 20000) if wavenumbers is None
+             else np.asarray(wavenumbers, float))
+    phase = smeared_phase_speed(track, foundation, kappa)
     minima = np.flatnonzero((phase[1:-1] < phase[:-2]) & (phase[1:-1] < phase[2:]))
     return float(phase[minima[0] + 1]) if len(minima) else float("nan")
 
