@@ -179,7 +179,13 @@ _NOTATION = (
      "number of wheels", "m, –"),
     (r"$\omega,\ \hat f(\omega)$", r"angular frequency; $\hat f(\omega)=\int f(t)e^{-i\omega t}dt$",
      "rad/s"),
-    (r"$k_b$", r"free bending wavenumber, $k_b^4 = \rho S\omega^2/EI$", "1/m"),
+    (r"$k_b$", r"free bending wavenumber of the rail at frequency $\omega$, $k_b^4 = \rho S\omega^2/EI$, "
+     "eq. (3)", "1/m"),
+    (r"$\kappa,\ \kappa_j$", r"a wavenumber; $\kappa_j = \omega/v + 2\pi j/L$, the wavenumbers of the "
+     "comb of sleeper forces (used for nothing else)", "1/m"),
+    (r"$q$", r"phase $\omega L/v$ between neighbouring sleepers, eq. (3) (used for nothing else)", "rad"),
+    (r"$\rho_0,\ \rho_n$", r"factor by which one step of eq. (21) multiplies the error of the mean, "
+     "of harmonic $n$", "–"),
     (r"$\eta_E(\omega)$", "receptance of the periodically supported rail, eq. (3)", "m/N"),
     (r"$A(\omega)$", r"pad dynamic stiffness $k_1 + i\omega\eta_1$", "N/m"),
     (r"$\Gamma(\omega)$", "load transfer of eq. (6)", "m⁴"),
