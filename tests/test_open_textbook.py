@@ -2,7 +2,7 @@
 instructor page and readable captions.
 
 Truths used: the files themselves (LICENSE, CITATION.cff, pyproject.toml,
-_config.yml, _toc.yml, book/references.bib, book/glossary.md,
+_config.yml, _toc.yml, book/references.bib, book/glossary.md, book/course_guide.md,
 book/instructor.md, book/_static/custom.css), the exercises as the notebooks
 label them, and the WCAG 2 definition of the contrast ratio
 (https://www.w3.org/TR/WCAG21/#dfn-contrast-ratio). Each check is also run
@@ -229,12 +229,18 @@ EXERCISE = re.compile(r"^```\{admonition\} Exercise (\d+\.\d+) \(([^)]+)\)", re.
 ROW = re.compile(r"^\| (\d+\.\d+) \| ([^|]+?) \|", re.M)
 
 
-def test_instructor_table_lists_every_exercise_with_its_level():
+def exercise_levels():
+    """{exercise number: level} as the notebooks' exercise titles give them."""
     labelled = {}
     for path in sorted(BOOK.glob("*.ipynb")):
         for cell in json.loads(path.read_text())["cells"]:
             if cell["cell_type"] == "markdown":
                 labelled.update(EXERCISE.findall("".join(cell["source"])))
+    return labelled
+
+
+def test_instructor_table_lists_every_exercise_with_its_level():
+    labelled = exercise_levels()
     table = dict(ROW.findall((BOOK / "instructor.md").read_text()))
     assert labelled, "no exercise found in the notebooks"
     wrong = {n: (table.get(n), level) for n, level in labelled.items() if table.get(n) != level}
@@ -242,6 +248,48 @@ def test_instructor_table_lists_every_exercise_with_its_level():
     assert not wrong and not extra, (
         f"book/instructor.md disagrees with the notebooks: {wrong} (table, notebook); "
         f"not an exercise: {sorted(extra)}")
+
+
+LEVELS = ("warm-up", "predict, then run", "core", "challenge")
+COUNTS = re.compile(r"The book has (\d+) exercises: (\d+) warm-up, (\d+) predict-then-run, "
+                    r"(\d+) core and\s+(\d+) challenge, one challenge in each of\s+chapters "
+                    r"([\d, and]+?)\.")
+
+
+def stated_counts(text):
+    """(total, {level: count}, chapters with a challenge) as the course guide states them."""
+    match = COUNTS.search(" ".join(text.split()))
+    assert match, "the course guide must say how many exercises each level has"
+    total, *per_level, chapters = match.groups()
+    return (int(total), dict(zip(LEVELS, map(int, per_level))),
+            sorted(int(c) for c in re.findall(r"\d+", chapters)))
+
+
+def counted(labelled):
+    """The same three from {exercise number: level}."""
+    per_level = {level: sum(v == level for v in labelled.values()) for level in LEVELS}
+    chapters = sorted({int(n.split(".")[0]) for n, v in labelled.items() if v == "challenge"})
+    return len(labelled), per_level, chapters
+
+
+def test_course_guide_names_every_level_and_counts_the_exercises_as_the_notebooks_do():
+    guide = (BOOK / "course_guide.md").read_text()
+    labelled = exercise_levels()
+    assert set(labelled.values()) <= set(LEVELS), set(labelled.values()) - set(LEVELS)
+    for level in LEVELS:
+        assert f"*{level}*:" in guide, f"the course guide does not explain '{level}'"
+    assert stated_counts(guide) == counted(labelled)
+    # one challenge in each chapter named, as the sentence says
+    challenges = [n for n, v in labelled.items() if v == "challenge"]
+    assert len(challenges) == len(counted(labelled)[2])
+
+
+def test_the_count_check_rejects_a_stale_count():
+    stale = ("The book has 27 exercises: 3 warm-up, 3 predict-then-run, 21 core and\n"
+             "  0 challenge, one challenge in each of chapters 6 and 11.")
+    labelled = {"1.1": "warm-up", "6.3": "challenge", "11.3": "challenge", "2.1": "core"}
+    assert stated_counts(stale) != counted(labelled)
+    assert stated_counts(stale)[2] == counted(labelled)[2] == [6, 11]
 
 
 def test_course_guide_gives_durations_and_points_to_the_new_pages():
