@@ -1,18 +1,22 @@
 """No exercise's answer is printed in the body of the book (issue 16, section 3).
 
-For every exercise of chapters 1-6 the table `ANSWERS` names its key
-answers: what the exercise asks for, where its solution prints it (a
-pattern over the solution's printed output, whose group is the number),
-the unit, and how close a number must be to count as the same answer (the
-printed resolution, or the step of the grid the answer was found on).
+For every exercise of the book the table `ANSWERS` names its key answers:
+what the exercise asks for, where its solution prints it (a pattern over
+the solution's printed output, whose group is the number), the unit, and
+how close a number must be to count as the same answer (the printed
+resolution, or the step of the grid the answer was found on).  An answer
+may also name the words its sentence must contain to count (`near`), where
+its number alone is too common to mean anything: a share of a wheel load,
+a ratio, a step count.  The exercises whose answers are no numbers are
+listed in `NOT_NUMBERS`, each with its reason.
 
 The body is everything a reader sees outside the solutions: the prose of
 every page under book/ (the exercise statements included, since a question
 must not carry its own answer) and the printed output of every code cell
 that is not part of a solution.  A key answer is given away where the body
 prints a number with the same unit within the tolerance; answers that are
-speeds of a peak count only where the body's sentence or line speaks of a
-peak, since speeds are printed everywhere.
+speeds count only where the body's sentence or line speaks of a peak (or of
+what the answer's `near` names), since speeds are printed everywhere.
 
 Truths used: the solutions' own printed outputs (each key must be found
 there, so the table cannot drift from the notebooks), and the case the
@@ -35,11 +39,12 @@ ROOT = Path(__file__).resolve().parents[1]
 BOOK = ROOT / "book"
 NOTEBOOKS = sorted(BOOK.glob("*.ipynb"))
 PAGES = NOTEBOOKS + sorted(BOOK.glob("*.md"))
-OWN = [p for p in NOTEBOOKS if p.stem[:2] in ("01", "02", "03", "04", "05", "06")]
+CHAPTERS = [p for p in NOTEBOOKS if p.stem[:2].isdigit()]
 
 EXERCISE = re.compile(r"^```\{admonition\} Exercise (\d+\.\d+)")
 SOLUTION = re.compile(r"^:::\{admonition\} Solution to Exercise (\d+\.\d+)")
-NUMBER = r"([-−+]?\d+(?:\.\d+)?)"
+# a number, with its exponent if it has one (2.1e-05 is not 5)
+NUMBER = r"([-−+]?\d+(?:\.\d+)?(?:e[-−+]?\d+)?)"
 
 # How each unit is written after (or, for a ratio, around) a number.
 UNITS = {
@@ -51,17 +56,28 @@ UNITS = {
     "Hz": NUMBER + r"\s*Hz\b",
     "kN": NUMBER + r"\s*kN\b(?![\s·]*s/m)",
     "kN s/m": NUMBER + r"\s*kN[\s·]*s/m",
-    "mm": NUMBER + r"\s*mm\b",
+    "mm": NUMBER + r"\s*mm\b(?!/)",            # not mm/kN, a receptance
     "m": NUMBER + r"\s*m\b(?![/²³^])",
     "ratio": r"(?:[x×]\s*" + NUMBER + r"(?![\d.])|" + NUMBER + r"\s*(?:×|times\b))",
     "steps": NUMBER + r"\s*(?:steps|iterations)\b",
     "slope": r"slope[^.\n]{0,40}?([-−]\d+(?:\.\d+)?)",
     "samples": r"N\s*[=≥>]\s*" + NUMBER + r"(?![\d.])",
     "list": r"(\[[\d, ]+\])",
+    "MN/m": NUMBER + r"\s*MN/m\b",
+    "kN m": NUMBER + r"\s*kN[\s·]*m\b(?![/²³^])",
+    "%": NUMBER + r"\s*%",
+    "Q": NUMBER + r"\s*Q\b",
+    "rho_0": r"(?:rho_0|ρ_?0|\\rho_0\$?)\s*(?:=|≈|is|of)\s*(?:about\s*)?" + NUMBER,
+    # a number alone: counts only where its sentence or line matches `near`,
+    # or, without `near`, anywhere (for numbers of four or five digits)
+    "bare": r"(?<![\d.])(\d+\.\d+)(?![\d.]|e[-−+]?\d)",
 }
 PEAK = re.compile(r"peak|deepest|largest|max", re.I)
+# where a sentence or a printed line ends (not at "eq. (23)", "Fig. 3", "e.g. ")
+SENTENCE_END = re.compile(r"(?<!\beq)(?<!\beqs)(?<!\bfig)(?<!\be\.g)(?<!\bi\.e)(?<!\bcf)\. |\n",
+                          re.I)
 
-# exercise: [(what it asks, pattern in the solution's output, unit, tolerance)]
+# exercise: [(what it asks, pattern in the solution's output, unit, tolerance[, near])]
 ANSWERS = {
     "1.1": [
         ("period of the long wagon", r"T \[s\]\s+by hand\s+([\d.]+)", "s", 0.005),
@@ -92,7 +108,10 @@ ANSWERS = {
     ],
     "3.1": [
         ("soft pad's frequency in Hz", r"library:\n\s+omega_0 = \d+ rad/s = ([\d.]+) Hz", "Hz", 0.05),
-        ("with the foundation", r"with the foundation (\d+) rad/s", "rad/s", 0.5),
+        # (chapter 10's omega_b of a 200 kg sleeper on the pad of Table 1 is
+        # the same 1095 rad/s: a sentence must speak of this exercise's case)
+        ("with the foundation", r"with the foundation (\d+) rad/s", "rad/s", 0.5,
+         r"(?<![\d.])100 (?:MN|kg)|soft|resilient|k_?1\s*\+\s*k_?2"),
         ("its damped frequency", r"damped frequency (\d+) rad/s", "rad/s", 0.5),
     ],
     "3.2": [
@@ -126,9 +145,9 @@ ANSWERS = {
          "slope", 0.05),
     ],
     "6.1": [
-        ("steps taken at k2 = 10 MN/m", r"\| 10 \| [\d.]+ \| n = 0 \| \d+ \| \d+ \| (\d+) \|",
+        ("steps taken at k2 = 10 MN/m", r"\| 10 \| [\d.]+ \| n = 0 \| \d+ \| [\d.]+ \| (\d+) \|",
          "steps", 0.5),
-        ("steps taken at k2 = 40 MN/m", r"\| 40 \| [\d.]+ \| n = 0 \| \d+ \| \d+ \| (\d+) \|",
+        ("steps taken at k2 = 40 MN/m", r"\| 40 \| [\d.]+ \| n = 0 \| \d+ \| [\d.]+ \| (\d+) \|",
          "steps", 0.5),
     ],
     "6.2": [
@@ -142,6 +161,146 @@ ANSWERS = {
         ("threshold damping on k2 = 20 MN/m", r"\| 20 \| (\d+) \| \d+ \|", "kN s/m", 0.5),
         ("paper's damping over the threshold", r"threshold at k2 = 20 MN/m: ([\d.]+)", "ratio", 0.05),
     ],
+    # ------------------------------------------------------ chapters 7-12 ---
+    "7.2": [
+        # the sweep's grid is 10 m/s, from 10 m/s: its lowest speed
+        ("speed of the largest uplift", r"largest uplift [\d.]+ mm at v = ([\d.]+) m/s", "m/s", 5,
+         r"(?s)^(?=.*(?:upl|lift|highest))(?=.*(?:tensionless|\be\s*[=:]\s*0(?![.\d])))"),
+        ("largest uplift, tensionless", r"largest uplift ([\d.]+) mm", "mm", 0.0005),
+        ("uplift at 150 m/s, tensionless", r"mm at v = [\d.]+ m/s, ([\d.]+) mm at 150", "mm",
+         0.0005),
+        ("part of the period lifted at 10 m/s", r"lifted during (\d+)% of the period", "%", 0.5,
+         r"lift|of the period|above (?:its|the) rest"),
+        ("part of the period lifted at 150 m/s", r"lifted during \d+%.*?, (\d+)% at 150", "%", 0.5,
+         r"lift|of the period|above (?:its|the) rest"),
+        ("uplift of a support that can only push", r"can only push: ([\d.]+) mm", "mm", 0.005),
+    ],
+    "8.1": [
+        ("first-order dip at eps = 0.8", r"\| 0\.8 \| \S+ \| (\S+) \|", "mm", 0.0005),
+        ("first-order error at eps = 0.8, of the peak", r"\| 0\.8 \|(?: \S+ \|){3} ([\d.]+) % \|",
+         "%", 0.5, r"first.order|perturb|expan|correction"),
+        ("first-order error at eps = 0.05, of the peak", r"\| 0\.05 \|(?: \S+ \|){3} ([\d.]+) % \|",
+         "%", 0.005, r"first.order|perturb|expan|correction"),
+    ],
+    "8.2": [
+        ("equivalent linear stiffness", r"k_eq = ([\d.]+) MN/m", "MN/m", 0.05),
+        ("secant stiffness at the peak", r"secant ([\d.]+) MN/m", "MN/m", 0.05),
+        # (the tangent stiffness at the peak, 54.9 MN/m, is printed by the
+        # chapter itself: a given the exercise compares with, not its answer)
+        ("mean of the equivalent spring", r"mean:\s+equivalent (\S+) mm", "mm", 0.00005),
+        ("uplift of the equivalent spring", r"uplift: equivalent ([\d.]+) mm", "mm", 0.00005),
+    ],
+    "9.1": [
+        ("mean rail-seat load of the C80 wagon", r"mean rail-seat load: predicted ([\d.]+) kN",
+         "kN", 0.05),
+        ("peak share, Winkler", r"peak share, Winkler: ([\d.]+)", "bare", 0.0005,
+         r"share|wheel load|\bQ\b"),
+        ("peak share, solved", r"peak share, solved: ([\d.]+)", "bare", 0.0005,
+         r"share|wheel load|\bQ\b"),
+    ],
+    "9.2": [
+        # to the resolution of the chapter's table (0.01 kN m)
+        ("ballasted, above a sleeper, m = 400", r"m = 400: ([\d.]+),", "kN m", 0.005),
+        ("ballasted, mid-span, m = 400", r"m = 400: [\d.]+, ([\d.]+);", "kN m", 0.005),
+        ("ballasted, mid-span over above the sleeper", r"m = 400: .*ratio ([\d.]+)", "bare", 0.0005,
+         r"mid.span|moment|sagging|ballasted"),
+    ],
+    "10.1": [
+        ("Winkler speed with EI doubled", r"Winkler: \d+ -> (\d+) m/s", "m/s", 0.5,
+         r"Winkler|critical"),
+        ("smeared speed with EI doubled", r"smeared with M: \d+ -> (\d+) m/s", "m/s", 0.5,
+         r"smeared|critical"),
+        # the sweep's grid is 0.5 m/s
+        ("peak with EI doubled", r"peak of eq\. \(23\): \d+ -> (\d+) m/s", "m/s", 0.5),
+        ("the peak's shift", r"\(×([\d.]+)\)", "ratio", 0.005),
+    ],
+    "10.2": [
+        ("5 % quantile, eta2 fixed", r"5 % ([\d.]+), 95 %", "bare", 0.0005,
+         r"quantile|between|band|%"),
+        ("95 % quantile, eta2 fixed", r"95 % ([\d.]+),", "bare", 0.0005,
+         r"quantile|between|band|%"),
+        ("the band's width", r"band ([\d.]+)", "bare", 0.00005, r"band|wide|width|quantile"),
+        ("correlation of the load with k2", r"load (-[\d.]+)", "bare", 0.005, r"correlat"),
+    ],
+    "11.1": [
+        ("error at 600 steps per period", r"600 steps per period: error (\S+) mm", "mm", 0.005e-5),
+        ("error at 300 steps per period", r"300 steps per period: measured (\S+) mm", "mm",
+         0.005e-5),
+        ("ratio of the two", r"measured \S+ mm \(ratio ([\d.]+)\)", "bare", 0.005,
+         r"ratio|factor|times"),
+    ],
+    "11.2": [
+        ("soft pad: difference at 600 steps", r"600 steps per period: max abs\(.*?\) = (\S+) mm",
+         "mm", 0.005e-5),
+        ("soft pad: difference at 1200 steps", r"1200 steps per period: max abs\(.*?\) = (\S+) mm",
+         "mm", 0.005e-6),
+        ("soft pad: steps of the fixed point", r"m = 15: (\d+) steps", "steps", 0),
+    ],
+    "11.3": [
+        ("difference of the 1200-step run", r"1200 steps: (\S+) mm", "mm", 0.05e-6),
+        ("difference of the extrapolation", r"extrapolated: (\S+) mm", "mm", 0.05e-7),
+    ],
+    "12.1": [
+        ("paper's track: steps to 0.1 %",
+         r"paper's track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0),
+        ("ballasted track: rho_0", r"ballasted track: rho_0 = ([\d.]+)", "rho_0", 0.0005),
+        ("ballasted track: steps to 1 %",
+         r"ballasted track:[\s\S]*?library, k = (\d+): mean 0\.\d+ % short", "steps", 0,
+         r"ballast"),
+        ("ballasted track: steps to 0.1 %",
+         r"ballasted track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0,
+         r"ballast"),
+    ],
+    "12.2": [
+        ("peak rail-seat load with eta1 doubled, 45 m/s",
+         r"45 m/s, eta1 = 2 MN s/m: seat ([\d.]+) Q", "Q", 0.0005),
+        ("deepest sleeper with eta1 doubled, 45 m/s",
+         r"45 m/s, eta1 = 2 MN s/m: seat [\d.]+ Q, sleeper ([\d.]+) mm", "mm", 0.0005,
+         r"2 MN|2000|doubl|twice"),
+    ],
+    "12.3": [
+        # the sweep's grid is 0.5 m/s
+        # (a peak speed counts where its sentence names the pad it is for:
+        # chapter 10's 356 m/s is the smeared speed of the pad of Table 1)
+        ("peak with k1 = 110 MN/m", r"k1 = 110 MN/m: peak (\d+) m/s", "m/s", 0.5,
+         r"110|halv|half"),
+        ("peak with k1 = 440 MN/m", r"k1 = 440 MN/m: peak (\d+) m/s", "m/s", 0.5,
+         r"440|doubl|twice"),
+        ("Winkler with k1 = 110 MN/m", r"k1 = 110 MN/m: .*Winkler (\d+) m/s", "m/s", 0.5,
+         r"Winkler"),
+        ("Winkler with k1 = 440 MN/m", r"k1 = 440 MN/m: .*Winkler (\d+) m/s", "m/s", 0.5,
+         r"Winkler"),
+        ("smeared with k1 = 110 MN/m", r"k1 = 110 MN/m: .*smeared (\d+) m/s", "m/s", 0.5,
+         r"smeared"),
+        ("smeared with k1 = 440 MN/m", r"k1 = 440 MN/m: .*smeared (\d+) m/s", "m/s", 0.5,
+         r"smeared"),
+        ("the peak's shift", r"peak moved by ([\d.]+) %", "%", 0.05),
+    ],
+    "12.4": [
+        ("critical speed of the rigid-pad beam", r"v_inf = ([\d.]+) m/s", "m/s", 0.05,
+         r"critical|rigid|v_\\?inf|infty|peak"),
+        ("peak with a pad 100 times stiffer", r"peak of eq\. \(23\), k1 = 22000 MN/m: (\d+) m/s",
+         "m/s", 0.5),
+        ("Winkler over v_inf", r"Winkler / v_inf = ([\d.]+)", "bare", 0.005,
+         r"Winkler|overestimat"),
+        ("square root of the mass ratio", r"sqrt of the mass ratio ([\d.]+)", "bare", 0.005,
+         r"mass|factor|times|ratio"),
+    ],
+}
+
+# Give-aways found and reported, not yet removed from the chapters: the test
+# of each is expected to fail (and fails if the give-away is gone, so that
+# the entry is removed).
+KNOWN_GIVE_AWAYS = {
+    "9.2": "chapter 9's moment table prints the ballasted track's sagging peaks at m = 400 "
+           "(14.80 and 16.76 kN m) and their ratio 1.132, and its summary 16.8 against "
+           "14.8 kN m; the exercise asks for them",
+}
+
+# exercises whose answers are no numbers, and why
+NOT_NUMBERS = {
+    "7.1": "(a) is a derivation, (b) checks it and prints the gap z0 the question gives, "
+           "(c) asks for an argument",
 }
 
 
@@ -178,26 +337,72 @@ def solution_outputs(path):
     return found
 
 
+TABLE_RULE = re.compile(r"^\|(?:\s*:?-+:?\s*\|)+\s*$")
+
+
+def _cells_of(line):
+    return [c.strip() for c in line.strip().strip("|").split("|")]
+
+
+def _column_unit(header):
+    """The unit a table's column header gives its numbers: '[mm]', '/ Q', or none."""
+    if re.search(r"/\s*Q\s*$", header):
+        return "Q"
+    bracket = re.findall(r"\[([^\]]+)\]", header)
+    return bracket[-1].replace("$", "").strip() if bracket else ""
+
+
+def spelled_out_tables(text):
+    """`text` with each row of its Markdown tables written as a line
+    'header: number unit; ...', so that a number in a table carries the
+    unit and the words of its column as a number in a sentence does."""
+    lines, out = text.split("\n"), []
+    headers = None
+    for n, line in enumerate(lines):
+        if n + 1 < len(lines) and line.startswith("|") and TABLE_RULE.match(lines[n + 1]):
+            headers = _cells_of(line)
+            out.append(line)
+        elif headers and TABLE_RULE.match(line):
+            out.append(line)
+        elif headers and line.startswith("|"):
+            parts = []
+            for header, cell in zip(headers, _cells_of(line)):
+                name = re.sub(r"\s*\[[^\]]*\]", "", header)
+                unit = _column_unit(header)
+                numeric = re.fullmatch(r"[-−+]?\d+(?:\.\d+)?(?:e[-−+]?\d+)?", cell)
+                parts.append(f"{name}: {cell} {unit}" if numeric and unit else f"{name}: {cell}")
+            out.append("; ".join(parts))
+        else:
+            headers = None
+            out.append(line)
+    return "\n".join(out)
+
+
 def body_texts():
-    """(label, text) of everything outside the solutions, page by page."""
+    """(label, text) of everything outside the solutions, page by page, with
+    its tables spelled out (`spelled_out_tables`)."""
     for path in PAGES:
         if path.suffix == ".md":
-            yield path.name, path.read_text()
+            yield path.name, spelled_out_tables(path.read_text())
             continue
         for i, cell in enumerate(json.loads(path.read_text())["cells"]):
             if _is_solution(cell):
                 continue
             text = _text(cell) if cell["cell_type"] == "markdown" else _printed(cell)
             if text:
-                yield f"{path.name} cell {i}", text
+                yield f"{path.name} cell {i}", spelled_out_tables(text)
 
 
 def _value(text):
     return text if text.startswith("[") else abs(float(text.replace("−", "-")))
 
 
-def give_aways(value, unit, tolerance, texts, peak_only=False):
-    """Places among `texts` [(label, text)] that print `value` in `unit`."""
+def give_aways(value, unit, tolerance, texts, peak_only=False, near=None):
+    """Places among `texts` [(label, text)] that print `value` in `unit`.
+
+    With `peak_only` a place counts only where its sentence or line speaks
+    of a peak; with `near` (a pattern), only where it matches `near`.
+    """
     found = []
     for label, text in texts:
         for match in re.finditer(UNITS[unit], text):
@@ -207,10 +412,12 @@ def give_aways(value, unit, tolerance, texts, peak_only=False):
             if not same:
                 continue
             # the sentence, or the printed line, around the number
-            start = max(text.rfind(". ", 0, match.start()), text.rfind("\n", 0, match.start()))
-            ends = [text.find(". ", match.end()), text.find("\n", match.end()), len(text)]
-            context = text[start + 1:min(i for i in ends if i >= 0)]
+            before = [m.end() for m in SENTENCE_END.finditer(text, 0, match.start())]
+            after = SENTENCE_END.search(text, match.end())
+            context = text[(before[-1] if before else 0):(after.start() if after else len(text))]
             if peak_only and not PEAK.search(context):
+                continue
+            if near and not re.search(near, context, re.I):
                 continue
             found.append(f"{label}: ...{context.strip()[:160]}...")
     return found
@@ -223,29 +430,42 @@ def _all_solution_outputs():
     return outputs
 
 
-def test_every_exercise_of_chapters_1_to_6_has_its_key_answers():
+def _answers(exercise):
+    """(what, pattern, unit, tolerance, near) of each key answer of `exercise`."""
+    return [(*answer, None)[:5] for answer in ANSWERS[exercise]]
+
+
+def test_every_exercise_of_the_book_has_its_key_answers_or_a_reason():
     exercises = [EXERCISE.match(_text(c)).group(1)
-                 for path in OWN for c in json.loads(path.read_text())["cells"]
+                 for path in CHAPTERS for c in json.loads(path.read_text())["cells"]
                  if c["cell_type"] == "markdown" and EXERCISE.match(_text(c))]
-    assert sorted(exercises) == sorted(ANSWERS)
+    assert len(exercises) == len(set(exercises))
+    assert sorted(exercises) == sorted(set(ANSWERS) | set(NOT_NUMBERS))
+    assert not set(ANSWERS) & set(NOT_NUMBERS)
+    assert all(ANSWERS.values()) and all(NOT_NUMBERS.values())
 
 
 @pytest.mark.parametrize("exercise", sorted(ANSWERS))
 def test_each_key_answer_is_printed_by_its_solution(exercise):
     printed = _all_solution_outputs()[exercise]
-    for what, pattern, _, _ in ANSWERS[exercise]:
+    for what, pattern, *_ in _answers(exercise):
         assert re.search(pattern, printed), f"{exercise}: {what} not found in\n{printed}"
 
 
-@pytest.mark.parametrize("exercise", sorted(ANSWERS))
+@pytest.mark.parametrize("exercise", [
+    pytest.param(e, marks=pytest.mark.xfail(strict=True, reason=KNOWN_GIVE_AWAYS[e]))
+    if e in KNOWN_GIVE_AWAYS else e for e in sorted(ANSWERS)])
 def test_no_key_answer_is_printed_in_the_body(exercise):
     printed = _all_solution_outputs()[exercise]
     body = list(body_texts())
     found = []
-    for what, pattern, unit, tolerance in ANSWERS[exercise]:
+    for what, pattern, unit, tolerance, near in _answers(exercise):
         value = _value(re.search(pattern, printed).group(1))
+        # speeds are printed everywhere: a speed counts where its sentence
+        # speaks of a peak, unless the answer names what it must speak of
+        peak_only = unit == "m/s" and near is None
         found += [f"{what} ({value} {unit}) in {place}"
-                  for place in give_aways(value, unit, tolerance, body, peak_only=unit == "m/s")]
+                  for place in give_aways(value, unit, tolerance, body, peak_only, near)]
     assert not found, f"exercise {exercise}'s answer in the body:\n" + "\n".join(found)
 
 
@@ -263,6 +483,39 @@ def test_the_check_finds_the_old_give_away_of_exercise_6_2():
     # and a speed that is no peak does not count
     assert not give_aways(25.0, "m/s", 2.5, [("x", "At 25 m/s the solve agrees.")],
                           peak_only=True)
+
+
+def test_the_check_finds_the_old_give_aways_of_exercises_12_1_and_12_3():
+    # book/12_conclusions.ipynb at 7f7eb2f: exercise 12.1's solution printed
+    old_12_1 = "library, k = 15: mean 23.939 % short"
+    # and the chapter's table, above the exercise, printed
+    old_table = ("| iterations k | max error [mm] | max error / peak [%] | mean short by [%] |\n"
+                 "|---:|---:|---:|---:|\n| 15 | 0.204 | 18.1 | 23.9 |\n")
+    answer = _value(re.search(r"k = 15: mean ([\d.]+) % short", old_12_1).group(1))
+    assert not give_aways(answer, "%", 0.05, [("12 cell 13", old_table)])   # as printed
+    assert give_aways(answer, "%", 0.05, [("12 cell 13", spelled_out_tables(old_table))])
+    # exercise 12.3's solution printed "M = 200 kg: peak 274 m/s" (a 0.5 m/s grid),
+    # and section 10.3's table
+    old_10_3 = ("| sleeper mass M [kg] | Winkler v_cr [m/s] | peak of eq. (23) [m/s] |\n"
+                "|---:|---:|---:|\n| 100 | 680 | 365 |\n| 200 | 680 | 274 |\n")
+    assert give_aways(274.0, "m/s", 0.5, [("10 cell 7", spelled_out_tables(old_10_3))],
+                      peak_only=True)
+
+
+def test_tables_exponents_and_near():
+    table = "| v [m/s] | dip [mm] | seat / Q |\n|---|---:|---:|\n| 45 | -1.132 | 0.339 |\n\nText."
+    row = spelled_out_tables(table).split("\n")[2]
+    assert row == "v: 45 m/s; dip: -1.132 mm; seat / Q: 0.339 Q"
+    assert spelled_out_tables(table).endswith("\n\nText.")
+    # an exponent belongs to its number: 2.10e-05 mm is not 5 mm
+    assert give_aways(2.1e-05, "mm", 5e-8, [("x", "error 2.10e-05 mm")])
+    assert not give_aways(5.0, "mm", 0.5, [("x", "error 2.10e-05 mm")])
+    assert not give_aways(0.0573, "mm", 5e-5, [("x", "receptance 0.0573 mm/kN")])
+    # a bare number counts only where its sentence says what `near` asks for
+    share = r"share|wheel load"
+    assert give_aways(0.36, "bare", 5e-4, [("x", "It carries 0.360 of a wheel load.")],
+                      near=share)
+    assert not give_aways(0.36, "bare", 5e-4, [("x", "It takes 0.360 s.")], near=share)
 
 
 SUB_PART = re.compile(r"\(([a-h])\)\s")
