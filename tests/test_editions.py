@@ -188,3 +188,15 @@ def test_the_leak_check_finds_a_promise_of_a_solution(tmp_path):
     assert editions.check_build(tmp_path) == []
     page.write_text("<html><body><p>Try each before you read its solution.</p></body></html>")
     assert editions.check_build(tmp_path)
+
+
+def test_the_student_edition_has_no_instructor_page(tmp_path):
+    """Marking notes are for the teacher: the page and every link to it are gone."""
+    editions.write_sources(tmp_path / "src", "student")
+    book = tmp_path / "src" / "book"
+    assert not (book / "instructor.md").exists()
+    assert "book/instructor" not in (tmp_path / "src" / "_toc.yml").read_text()
+    texts = [p.read_text() for p in book.glob("*.md")]
+    texts += ["".join(c["source"]) for p in book.glob("*.ipynb") for c in _cells(p)]
+    assert not any("{doc}`instructor`" in text for text in texts)
+    assert (ROOT / "book" / "instructor.md").exists()  # the full book keeps it

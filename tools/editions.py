@@ -58,6 +58,8 @@ APPENDIX_TOC = f"""  - caption: Appendix
 """
 
 
+INSTRUCTOR = "instructor"
+
 # What each edition says under every chapter's "## Exercises" heading about
 # where the solutions are.
 WHERE_SOLUTIONS_ARE = {
@@ -152,6 +154,11 @@ def solution_traces(notebook: dict) -> tuple[list[str], set[str]]:
     return lines, images
 
 
+def without_instructor_links(text: str) -> str:
+    """Links to the instructor's page, which the student edition lacks, as plain words."""
+    return re.sub(r"\{doc\}`instructor`", "the instructor's page (in the teacher's edition)", text)
+
+
 def write_sources(target: Path, edition: str) -> list[Path]:
     """Copy the book's sources to `target` as `edition` makes them; return the notebooks.
 
@@ -174,6 +181,13 @@ def write_sources(target: Path, edition: str) -> list[Path]:
     if edition == "student":
         config = re.sub(r'^title: "(.*)"$', r'title: "\1 (student edition)"', config, count=1,
                         flags=re.M)
+        # The instructor's page (marking notes) stays out of the students' hands.
+        toc, count = re.subn(rf"^\s*- file: book/{INSTRUCTOR}\n", "", toc, flags=re.M)
+        assert count == 1, f"_toc.yml must list book/{INSTRUCTOR} once"
+        (target / "_toc.yml").write_text(toc)
+        (target / "book" / f"{INSTRUCTOR}.md").unlink()
+        for page in (target / "book").glob("*.md"):
+            page.write_text(without_instructor_links(page.read_text()))
     (target / "_config.yml").write_text(config)
     notebooks = {source.stem: json.loads(source.read_text())
                  for source in sorted((ROOT / "book").glob("*.ipynb"))}
@@ -185,6 +199,10 @@ def write_sources(target: Path, edition: str) -> list[Path]:
             notebook = with_note_on_solutions(strip_solutions(notebook),
                                               WHERE_SOLUTIONS_ARE[edition],
                                               keep_intro=edition != "student")
+        if edition == "student":
+            for cell in notebook["cells"]:
+                if cell["cell_type"] == "markdown":
+                    cell["source"] = without_instructor_links("".join(cell["source"]))
         path = target / "book" / f"{name}.ipynb"
         path.write_text(json.dumps(notebook, indent=1, ensure_ascii=False) + "\n")
         written.append(path)
