@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import railtrack as rt
-from railtrack.sweep import sweep
+from railtrack.studies.sweep import sweep
 
 TRACK, TRAIN = rt.Track.paper(), rt.Train.paper()
 

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import railtrack as rt
-from railtrack.branch_stability import segments
+from railtrack.studies.branch_stability import segments
 
 FOLD_TRACK = rt.Track.paper(pad_damping=1e5)
 FOLD_LAW = rt.CubicFoundation(20e6, 2e13, 0.8, 5000.0)

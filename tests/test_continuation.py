@@ -10,9 +10,10 @@ import numpy as np
 import pytest
 
 import railtrack as rt
-from railtrack.continuation import Branch, continuation
-from railtrack.harmonic_balance import harmonic_system, residual, residual_jacobian, residual_norm
-from railtrack.newton import iterate_newton, linear_guess
+from railtrack.studies.continuation import Branch, continuation
+from railtrack.equations.aft_jacobian import residual_jacobian
+from railtrack.equations.harmonic_balance import harmonic_system, residual, residual_norm
+from railtrack.solvers.newton import iterate_newton, linear_guess
 
 # The case with folds (GitHub issue 9): stiff-damped pads, a softly damped
 # hardening foundation.  m = 25: the estimated truncation error stays below

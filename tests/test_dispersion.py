@@ -5,7 +5,7 @@ import pytest
 import scipy.linalg
 
 import railtrack as rt
-from railtrack.dispersion import harmonic_resonance_speeds, smeared_phase_speed
+from railtrack.equations.dispersion import harmonic_resonance_speeds, smeared_phase_speed
 
 TRACK, LAW = rt.Track.paper(), rt.LinearFoundation.paper()
 

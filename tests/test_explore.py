@@ -20,7 +20,7 @@ import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
 # The module itself (railtrack.explore is the function that calls it).
-ex = importlib.import_module("railtrack.explorer")
+ex = importlib.import_module("railtrack.plotting.explorer")
 
 
 def _same(a: rt.Solution, b: rt.Solution) -> float:

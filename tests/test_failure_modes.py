@@ -21,8 +21,8 @@ from railtrack import (
     simulate_time_domain,
     solve,
 )
-from railtrack.conditioning import roundoff_estimate
-from railtrack.harmonic_balance import harmonic_system
+from railtrack.solvers.conditioning import roundoff_estimate
+from railtrack.equations.harmonic_balance import harmonic_system
 
 PAPER = Track.paper()
 TRAIN = Train.paper()
@@ -162,7 +162,7 @@ def test_analytic_warns_about_what_it_ignores():
 
 def test_analytic_is_not_converged_when_its_residual_is_not_finite(monkeypatch):
     import sys
-    monkeypatch.setattr(sys.modules["railtrack.solve"], "residual_norm",
+    monkeypatch.setattr(sys.modules["railtrack.solvers.solve"], "residual_norm",
                         lambda system, values: float("nan"))
     assert not solve(PAPER, TRAIN, LINEAR, 15, method="analytic").converged
 
@@ -204,7 +204,7 @@ def test_single_precision_fields_are_computed_in_double():
 def test_pure_cubic_law_starts_from_the_static_mean():
     pure = lambda w, v: 2e13 * w**3 + 0.2e6 * v  # noqa: E731
     system = harmonic_system(Passage(PAPER, TRAIN), pure, 15)
-    from railtrack.newton import linear_guess
+    from railtrack.solvers.newton import linear_guess
     mean = linear_guess(system)[0].real
     # the foundation alone carries 2 Q L / H = 5 kN at the mean: 2e13 w^3 = -5e3
     assert mean == pytest.approx(-(5e3 / 2e13) ** (1 / 3), rel=1e-12)

@@ -65,7 +65,7 @@ def test_superposition_of_axles_on_the_linear_law():
 
 def test_the_time_domain_ring_takes_any_axle_list():
     """The ring's loads are at the axle positions of the train, with their loads."""
-    from railtrack.fem import ring_mesh, wheel_load_entries
+    from railtrack.timedomain.fem import ring_mesh, wheel_load_entries
 
     passage = rt.Passage(TRACK, TRAINS["coach"])
     mesh = ring_mesh(passage, 4)
@@ -114,8 +114,8 @@ def test_the_bending_moment_is_accurate_at_the_automatic_harmonics(train):
         assert np.abs(moment - reference).max() < 3e-3 * np.abs(reference).max()
         assert moment.max() == pytest.approx(fe.max(), rel=3e-3)
     # without the closed-form kinks the same series is far off: the test can tell
-    from railtrack.solution import fourier_series
-    from railtrack.rail_field import rail_field_coefficients
+    from railtrack.solvers.solution import fourier_series
+    from railtrack.equations.rail_field import rail_field_coefficients
     omega = auto.frequencies
     plain = TRACK.rail_bending_stiffness * fourier_series(
         rail_field_coefficients(auto.passage, omega, auto.coefficients, [0.0])[1][0], omega, t)

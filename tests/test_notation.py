@@ -1,6 +1,6 @@
 """One symbol per quantity across the book (issue 16, section 4).
 
-The book's notation is the table `railtrack.plotting.tables.notation_table`,
+The book's notation is the table `railtrack.plotting.book.tables.notation_table`,
 printed in chapter 1.  This test reads the prose of every page under book/
 (the markdown cells of the notebooks and the .md pages) and the printed
 output of every code cell, and fails where a symbol is used for a quantity
@@ -175,7 +175,7 @@ def test_the_book_keeps_the_notation(rule):
 
 
 def test_the_notation_table_lists_the_conventions():
-    from railtrack.plotting.tables import notation_table
+    from railtrack.plotting.book.tables import notation_table
 
     rows = {row.split("|")[1].strip(): row.split("|")[2]
             for row in notation_table().splitlines()[2:]}

@@ -1,4 +1,4 @@
-"""Data and plots of Figures 3–7 (`railtrack.plotting.paper_figures`).
+"""Data and plots of Figures 3–7 (`railtrack.plotting.book.paper_figures`).
 
 Oracles: eq. (23) for the linear law, evaluated here independently as a
 real cosine/sine sum; the geometric error of eq. (21) for the mean, which for
@@ -18,7 +18,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
-from railtrack.plotting import paper_figures as pf  # noqa: E402
+from railtrack.plotting.book import paper_figures as pf  # noqa: E402
 from railtrack.plotting.style import MM  # noqa: E402
 
 PASSAGE = rt.Passage.paper()

@@ -39,18 +39,20 @@ import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
 import railtrack.plotting  # noqa: E402
-from railtrack.harmonic_balance import harmonic_system  # noqa: E402
-from railtrack.plotting import coefficients as pc  # noqa: E402
-from railtrack.plotting import model as pm  # noqa: E402
-from railtrack.plotting import paper_figures as pf  # noqa: E402
-from railtrack.plotting import passage as pp  # noqa: E402
-from railtrack.plotting import rail_span as rs  # noqa: E402
-from railtrack.plotting import speed as sp  # noqa: E402
-from railtrack.plotting import speed_laws as sl  # noqa: E402
-from railtrack.plotting import track_engineer as te  # noqa: E402
-from railtrack.plotting import truncation as pt  # noqa: E402
+from railtrack.equations.harmonic_balance import harmonic_system  # noqa: E402
+from railtrack.plotting.book import coefficients as pc  # noqa: E402
+from railtrack.plotting.book import model as pm  # noqa: E402
+from railtrack.plotting.book import paper_figures as pf  # noqa: E402
+from railtrack.plotting.book import passage as pp  # noqa: E402
+from railtrack.plotting.book import rail_span as rs  # noqa: E402
+from railtrack.plotting.book import speed as sp  # noqa: E402
+from railtrack.plotting.branch import plot_branch, ramp_on_branch  # noqa: E402
+from railtrack.plotting.solution import plot_solution  # noqa: E402
+from railtrack.plotting.book import speed_laws as sl  # noqa: E402
+from railtrack.plotting.book import track_engineer as te  # noqa: E402
+from railtrack.plotting.book import truncation as pt  # noqa: E402
 from railtrack.plotting import style  # noqa: E402
-from railtrack.plotting import verification as vf  # noqa: E402
+from railtrack.plotting.book import verification as vf  # noqa: E402
 from railtrack.plotting.style import plot_sweep  # noqa: E402
 
 PASSAGE = rt.Passage.paper()
@@ -264,9 +266,9 @@ FIGURES = {
         {name: -1e-3 * (1.0 + k * np.exp(-((np.linspace(5.0, 700.0, 140) - 350.0) / 50.0) ** 2))
          for k, name in enumerate(("paper's track", "lightly damped", "ballasted"))},
         marks={"smeared": 340.0, "Winkler": 500.0, "bound": 600.0}, title="t"),
-    "speed.plot_branch (no stability)": lambda: sp.plot_branch(
+    "branch.plot_branch (no stability)": lambda: plot_branch(
         _branch(None), linear=(np.linspace(300.0, 600.0, 31), -1e-3 * np.ones(31))),
-    "speed.plot_branch (stability and ramps)": lambda: sp.plot_branch(
+    "branch.plot_branch (stability and ramps)": lambda: plot_branch(
         _branch(True), linear=(np.linspace(300.0, 600.0, 31), -1e-3 * np.ones(31)),
         ramps={"ring, rising speed": _ramp(np.linspace(440.0, 700.0, 14)),
                "ring, falling speed": _ramp(np.linspace(700.0, 440.0, 14))}),
@@ -310,11 +312,13 @@ FIGURES = {
     "model.plot_rail_coupling": lambda: pm.plot_rail_coupling(PASSAGE, np.geomspace(0.1, 5000.0, 400)),
     "model.plot_rail_and_sleeper": lambda: pm.plot_rail_and_sleeper(_solution(), samples=100),
     "model.draw_track_schematic": lambda: pm.draw_track_schematic(PASSAGE),
+    "solution.plot_solution": lambda: plot_solution(_solution()),
 }
 
 # Public functions that draw no figure of their own.
 NOT_FIGURES = {
-    "track_engineer.draw_bowl": "draws into the axes of plot_bowls and plot_bowl_frame",
+    "solution.draw_bowl": "draws into the axes of plot_bowls, plot_bowl_frame and plot_solution",
+    "solution.draw_solution": "draws into the axes of plot_solution and the explorer",
     "track_engineer.animate_bowl": "animates the axes of plot_bowl_frame",
 }
 
@@ -343,15 +347,23 @@ def _qualified(function) -> str:
 
 def test_every_figure_function_is_checked():
     found = set()
-    for module in pkgutil.iter_modules(railtrack.plotting.__path__):
-        mod = importlib.import_module(f"railtrack.plotting.{module.name}")
-        for fname, function in inspect.getmembers(mod, inspect.isfunction):
-            if re.fullmatch(r"plot_\w+|figure\d|draw_\w+|animate_\w+", fname):
-                found.add(_qualified(function))
+    packages = ("railtrack.plotting", "railtrack.plotting.book")
+    for package in packages:
+        for module in pkgutil.iter_modules(importlib.import_module(package).__path__):
+            mod = importlib.import_module(f"{package}.{module.name}")
+            for fname, function in inspect.getmembers(mod, inspect.isfunction):
+                if re.fullmatch(r"plot_\w+|figure\d|draw_\w+|animate_\w+", fname):
+                    found.add(_qualified(function))
 
     def resolve(name):       # "module.function (variant)" -> where the function is defined
         module, fname = name.split(" ")[0].split(".")
-        return _qualified(getattr(importlib.import_module(f"railtrack.plotting.{module}"), fname))
+        for package in packages:
+            try:
+                found_module = importlib.import_module(f"{package}.{module}")
+            except ModuleNotFoundError:
+                continue
+            return _qualified(getattr(found_module, fname))
+        raise ModuleNotFoundError(module)
 
     checked = {resolve(name) for name in FIGURES} | {resolve(name) for name in NOT_FIGURES}
     assert found - checked == set()

@@ -14,13 +14,13 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
-from railtrack.fixed_point import contraction_factors  # noqa: E402
-from railtrack.harmonic_balance import (  # noqa: E402
+from railtrack.solvers.fixed_point import contraction_factors  # noqa: E402
+from railtrack.equations.harmonic_balance import (  # noqa: E402
     harmonic_system,
     nonlinear_coefficients,
     synthesize,
 )
-from railtrack.plotting import coefficients as pc  # noqa: E402
+from railtrack.plotting.book import coefficients as pc  # noqa: E402
 
 PASSAGE = rt.Passage.paper()
 

@@ -1,4 +1,4 @@
-"""railtrack.plotting.model: the tables and figures of book chapters 1–3.
+"""railtrack.plotting.book.model: the tables and figures of book chapters 1–3.
 
 The tables must show the library's own numbers in the units they state, and
 each figure must plot what the library computes (not a copy or a rescaled
@@ -16,7 +16,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
-from railtrack.plotting import model  # noqa: E402
+from railtrack.plotting.book import model  # noqa: E402
 
 PASSAGE = rt.Passage.paper()
 
@@ -109,12 +109,12 @@ def test_pole_frequencies_satisfy_the_pole_condition():
     poles = model.receptance_pole_frequencies(PASSAGE, 5000.0)
     assert poles[0] == pytest.approx(model.critical_frequency(PASSAGE))
     assert poles[0] == pytest.approx(6.2493, rel=1e-4)
-    kb = rt.receptance.bending_wavenumber(PASSAGE, poles)
+    kb = rt.equations.receptance.bending_wavenumber(PASSAGE, poles)
     L, v = PASSAGE.sleeper_spacing, PASSAGE.speed
     np.testing.assert_allclose(np.cos(kb * L), np.cos(poles * L / v), atol=1e-9)
     # no pole missed: cos(k_b L) - cos(omega L / v) changes sign only at the listed poles
     omega = np.linspace(1.0, 5000.0, 400_001)
-    kb = rt.receptance.bending_wavenumber(PASSAGE, omega)
+    kb = rt.equations.receptance.bending_wavenumber(PASSAGE, omega)
     gap = np.cos(kb * L) - np.cos(omega * L / v)
     crossings = np.count_nonzero(np.diff(np.sign(gap)) != 0)
     assert crossings == len(poles)
@@ -151,7 +151,7 @@ def test_receptance_check_table_rows():
 
 
 def test_notation_table_is_complete_and_lists_each_symbol_once():
-    from railtrack.plotting.tables import notation_table
+    from railtrack.plotting.book.tables import notation_table
 
     rows = notation_table().splitlines()[2:]
     symbols = [row.split("|")[1].strip() for row in rows]

@@ -1,4 +1,4 @@
-"""railtrack.plotting.passage: the dips and uplifts of a wagon passage.
+"""railtrack.plotting.book.passage: the dips and uplifts of a wagon passage.
 
 Oracles: a made-up w(x) with dips and bumps at known places and depths (the
 function must find exactly those), and the symmetry of the undamped track:
@@ -17,7 +17,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
-from railtrack.plotting import passage as pp  # noqa: E402
+from railtrack.plotting.book import passage as pp  # noqa: E402
 from railtrack.plotting.style import MM  # noqa: E402
 
 PASSAGE = rt.Passage.paper()

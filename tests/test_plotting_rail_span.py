@@ -1,4 +1,4 @@
-"""railtrack.plotting.rail_span: the rail along one span.
+"""railtrack.plotting.book.rail_span: the rail along one span.
 
 Oracles: a made-up solution whose rail_displacement is a known function of
 (t, x), so the sampled profiles and the plotted lines must be exactly that
@@ -16,7 +16,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import railtrack as rt  # noqa: E402
-from railtrack.plotting import rail_span as rs  # noqa: E402
+from railtrack.plotting.book import rail_span as rs  # noqa: E402
 from railtrack.plotting.style import MM  # noqa: E402
 
 PASSAGE = rt.Passage.paper()

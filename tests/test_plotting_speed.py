@@ -1,4 +1,4 @@
-"""railtrack.plotting.speed: critical speeds, peak finding, halved spacing, figures.
+"""railtrack.plotting.book.speed: critical speeds, peak finding, halved spacing, figures.
 
 Oracles: the Winkler formula by hand; the smeared track with a vanishing
 sleeper mass tends to it; a parabola's vertex is found exactly; halving the
@@ -17,7 +17,8 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
-from railtrack.plotting import speed as sp  # noqa: E402
+from railtrack.plotting.book import speed as sp  # noqa: E402
+from railtrack.plotting.branch import plot_branch, ramp_on_branch  # noqa: E402
 
 LIGHT = rt.Track.paper(pad_damping=30e3), rt.LinearFoundation(20e6, 20e3)
 
@@ -83,11 +84,11 @@ def test_a_ramp_state_is_matched_to_its_crossing_and_the_branch_plots_its_stabil
     ramp = rt.SpeedRamp(np.array([525.0, 525.0]), np.array([dips[3] + 1e-7, np.nan]),
                         np.zeros(2), np.array([True, False]), np.array([30, 80]), np.zeros(2),
                         (np.zeros(1), np.zeros(1)))
-    assert sp.ramp_on_branch(ramp, fold_branch)[0][0] == before[3]
-    assert sp.ramp_on_branch(ramp, fold_branch)[1] is None
+    assert ramp_on_branch(ramp, fold_branch)[0][0] == before[3]
+    assert ramp_on_branch(ramp, fold_branch)[1] is None
     stable = np.arange(len(fold_branch)) < 50
     marked = dataclasses.replace(fold_branch, stable=stable, checks={10: None, 80: None})
-    fig = sp.plot_branch(marked, ramps={"rising": ramp})
+    fig = plot_branch(marked, ramps={"rising": ramp})
     lines = {line.get_gid(): line for line in fig.axes[0].lines}
     solid = np.isfinite(lines["branch-stable"].get_ydata()).sum()
     dotted = np.isfinite(lines["branch-unstable"].get_ydata()).sum()

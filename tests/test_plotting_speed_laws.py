@@ -1,4 +1,4 @@
-"""railtrack.plotting.speed_laws: speed curves of the nonlinear laws, secant stiffness, figure.
+"""railtrack.plotting.book.speed_laws: speed curves of the nonlinear laws, secant stiffness, figure.
 
 Oracles: a bilinear law with e = 1 is the linear law, and both match eq. (23);
 the secant stiffness of a linear law is its k2 and of a bilinear law lies
@@ -16,7 +16,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
-from railtrack.plotting import speed_laws as sl  # noqa: E402
+from railtrack.plotting.book import speed_laws as sl  # noqa: E402
 
 TRACK, WAGON = rt.Track.paper(pad_damping=30e3), rt.Train.paper()
 SPEEDS = np.linspace(300.0, 460.0, 161)

@@ -1,4 +1,4 @@
-"""railtrack.plotting.track_engineer: bowl, rail-seat load and bending moment.
+"""railtrack.plotting.book.track_engineer: bowl, rail-seat load and bending moment.
 
 Oracles: the static Winkler beam (Hetényi 1946), whose deflection under one
 load P is -(P lambda / 2k) e^{-lambda|x|}(cos lambda x + sin lambda x),
@@ -18,7 +18,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
-from railtrack.plotting import track_engineer as te  # noqa: E402
+from railtrack.plotting.book import track_engineer as te  # noqa: E402
 from railtrack.plotting.style import MM  # noqa: E402
 
 TRACK, LAW = rt.Track.paper(), rt.LinearFoundation.paper()

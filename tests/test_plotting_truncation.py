@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from railtrack import CubicFoundation, LinearFoundation, Passage, Track, Train, solve
-from railtrack.plotting import truncation as pt
+from railtrack.plotting.book import truncation as pt
 
 STUDY = pt.truncation_study(Passage.paper(), LinearFoundation.paper(), (18.0, 40.0))
 

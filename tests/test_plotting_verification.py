@@ -1,4 +1,4 @@
-"""Data functions of `railtrack.plotting.verification` (book chapter 9).
+"""Data functions of `railtrack.plotting.book.verification` (book chapter 9).
 
 Coarse FE settings (2 elements per span, 600 steps per period) keep the file
 fast; their error against eq. (23) was measured at 4.1e-8 m (linear law),
@@ -20,7 +20,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import railtrack as rt  # noqa: E402
-from railtrack.plotting import verification as vf  # noqa: E402
+from railtrack.plotting.book import verification as vf  # noqa: E402
 from railtrack.plotting.style import MM  # noqa: E402
 
 PASSAGE = rt.Passage.paper()

@@ -19,8 +19,8 @@ import numpy as np
 import pytest
 
 import railtrack as rt
-from railtrack import rail_field as rf
-from railtrack.receptance import bending_wavenumber, critical_frequency, rail_receptance
+from railtrack.equations import rail_field as rf
+from railtrack.equations.receptance import bending_wavenumber, critical_frequency, rail_receptance
 
 PASSAGE = rt.Passage.paper()
 L = PASSAGE.sleeper_spacing
@@ -64,7 +64,7 @@ def test_closed_form_equals_brute_force_poisson_sum(derivative):
 def brute_kernels(passage, omega, xi, terms=200_000):
     """Lambda, Lambda_2 by summing j != 0 directly; Lambda_2's 1/(2 pi j)^2 part is summed as
     the Fourier series of a parabola, sum e^{-2 pi i j xi}/(2 pi j)^2 = (xi^2 - xi + 1/6)/2."""
-    from railtrack.receptance import receptance_factors
+    from railtrack.equations.receptance import receptance_factors
     q = omega * passage.sleeper_spacing / passage.speed
     a = bending_wavenumber(passage, omega) * passage.sleeper_spacing
     gap = receptance_factors(passage, omega).gap

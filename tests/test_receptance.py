@@ -12,12 +12,12 @@ import numpy as np
 import pytest
 
 from railtrack import Passage, load_coefficients, rail_coupling, rail_receptance
-from railtrack.receptance import (
+from railtrack.equations.receptance import (
     bending_wavenumber,
     moving_load_receptance,
     rail_receptance_lattice_sum,
 )
-from railtrack.sleeper import coupling_and_transfer, load_transfer, pad_stiffness
+from railtrack.equations.sleeper import coupling_and_transfer, load_transfer, pad_stiffness
 
 PASSAGE = Passage.paper()
 # omega at which omega / v = k_b: both brackets of the printed Gamma are singular

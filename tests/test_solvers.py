@@ -20,13 +20,13 @@ from railtrack import (
     solve,
     sweep_speeds,
 )
-from railtrack.fixed_point import automatic_split, contraction_factors
-from railtrack.harmonic_balance import (
+from railtrack.solvers.fixed_point import automatic_split, contraction_factors
+from railtrack.equations.aft_jacobian import residual_jacobian
+from railtrack.equations.harmonic_balance import (
     from_real,
     harmonic_system,
     nonlinear_coefficients,
     residual,
-    residual_jacobian,
     residual_norm,
     to_real,
     two_sided,

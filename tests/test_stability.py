@@ -14,11 +14,11 @@ import numpy as np
 import pytest
 
 from railtrack import CubicFoundation, LinearFoundation, Passage, Track, Train, continuation, solve
-from railtrack.fem import ring_mesh
-from railtrack.ramp import speed_ramp
-from railtrack.ring_state import ring_state_from_solution
-from railtrack.stability import check_stability, record_spectrum, tiled_train
-from railtrack.timedomain import simulate_time_domain
+from railtrack.timedomain.fem import ring_mesh
+from railtrack.studies.ramp import speed_ramp
+from railtrack.timedomain.ring_state import ring_state_from_solution
+from railtrack.studies.stability import check_stability, record_spectrum, tiled_train
+from railtrack.timedomain.simulation import simulate_time_domain
 
 TRACK, TRAIN = Track.paper(), Train.paper()
 SOFT = Track.paper(pad_damping=1e5)

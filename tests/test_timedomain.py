@@ -1,4 +1,4 @@
-"""The time-domain FE model (`railtrack.timedomain`) against the semi-analytical method.
+"""The time-domain FE model (`railtrack.timedomain.simulation`) against the semi-analytical method.
 
 The two share nothing but `Track`, `Train` and the foundation laws: the FE ring is
 integrated in time by Newmark's scheme, the semi-analytical solution is a
@@ -42,10 +42,10 @@ from railtrack import (
     Train,
     solve,
 )
-from railtrack.fem import ring_mesh, wheel_load_entries
-from railtrack.runcost import LongRunWarning, check_run_cost
-from railtrack.timedomain import TimeDomainSolution, simulate_time_domain
-from railtrack.timestep import TimeStepWarning, estimate_step_error
+from railtrack.timedomain.fem import ring_mesh, wheel_load_entries
+from railtrack.timedomain.runcost import LongRunWarning, check_run_cost
+from railtrack.timedomain.simulation import TimeDomainSolution, simulate_time_domain
+from railtrack.timedomain.timestep import TimeStepWarning, estimate_step_error
 
 TRACK = Track.paper()
 TRAIN = Train.paper()

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import railtrack as rt
-from railtrack.ballast import ZHAI_2004, single_layer, two_layer_stiffness
+from railtrack.model.ballast import ZHAI_2004, single_layer, two_layer_stiffness
 
 
 @pytest.mark.parametrize("changes, message", [
@@ -72,7 +72,7 @@ def test_a_single_axle_60_m_from_its_neighbours_is_alone(track, law, speed):
         return np.array([s.sleeper_displacement(t).min(), s.rail_displacement(t).min(),
                          s.rail_seat_load(t).max()])
     alone = peaks(480.0)
-    np.testing.assert_allclose(peaks(rt.train.SINGLE_AXLE_LENGTH), alone, rtol=1e-3)
+    np.testing.assert_allclose(peaks(rt.model.train.SINGLE_AXLE_LENGTH), alone, rtol=1e-3)
     assert not np.allclose(peaks(1.8), alone, rtol=1e-3)     # the test can tell neighbours
 
 

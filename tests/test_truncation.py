@@ -2,7 +2,7 @@
 
 The truth here is the same equations kept to many more harmonics (the
 series converges: |c_n| falls faster than n^-2), for the linear law also
-eq. (23) itself.  The estimate of `railtrack.truncation` linearises the
+eq. (23) itself.  The estimate of `railtrack.solvers.truncation` linearises the
 neglected harmonics; these tests check that it stays within a factor of 3
 of the true error, from the paper's 18 m wagon to a 180 m one, for all
 three laws, and that harmonics="auto" meets the accuracy asked for.

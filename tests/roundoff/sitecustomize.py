@@ -15,7 +15,7 @@ import os
 _DELTA = float(os.environ.get("RAILTRACK_ROUNDOFF_PROBE", "0") or 0.0)
 
 if _DELTA:
-    import railtrack.track as _track
+    import railtrack.model.track as _track
 
     _PERTURBED = (
         "rail_linear_mass",

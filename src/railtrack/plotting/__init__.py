@@ -1,13 +1,19 @@
-"""Plots of the book, one module per part of it, all drawn from library results.
+"""Figures, in two parts: plots for your own results, and the book's figure recipes.
 
-* `railtrack.plotting.style`: units, labels and the shared look;
-* `railtrack.plotting.model`: the track schematic, Table 1, eq. (3) spectra;
-* `railtrack.plotting.coefficients`: P_n, F_n and convergence of the iterations;
-* `railtrack.plotting.paper_figures`: Figures 3–7 of the paper;
-* `railtrack.plotting.verification`: harmonic balance against the time-domain model.
+Plots a user calls on their own solutions:
 
-Each function returns a `matplotlib.figure.Figure` and uses SI inside,
-showing millimetres and seconds on the axes.
+* `railtrack.plotting.solution`: one solution, its period and its bowl (`plot_solution`);
+* `railtrack.plotting.branch`: a branch with its folds, stability and ramps (`plot_branch`);
+* `railtrack.plotting.explorer`: the classroom explorer (`railtrack.explore`);
+* `railtrack.plotting.style`: units, labels and the shared, colour-blind-safe look.
+
+`railtrack.plotting.book` holds the recipes of the book's figures and
+tables, one module per part of the book; they build on the plots above.
+
+Imports: any layer of the library (`model`, `equations`, `solvers`,
+`timedomain`, `studies`); nothing imports from here but the book and the
+explorer.  Each function returns a `matplotlib.figure.Figure`, SI inside,
+millimetres and seconds on the axes.
 """
 
 

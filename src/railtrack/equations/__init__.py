@@ -1,0 +1,11 @@
+"""The paper's equations, eqs. (3)-(23), as pure functions of the parameters.
+
+`receptance` (eq. 3), `rail_field` (eq. 3 at any x), `moment` (the rail's
+bending moment and its kinks), `sleeper` (eqs. 4-8, 14: the pad and the
+coupling P), `load` (eqs. 9-16: the load F), `harmonic_balance` (eqs.
+17-20: the residual, by AFT), `aft_jacobian` (its exact Jacobian), `linear`
+(eq. 23, the closed form of the linear law), `bowl` (the deflection bowl)
+and `dispersion` (the free waves of the smeared track).
+
+Imports: `railtrack.model` only.
+"""

@@ -1,0 +1,114 @@
+"""A branch of periodic solutions, drawn with its folds, its stability and the ring's ramps.
+
+For any `railtrack.Branch` (from `railtrack.continuation`), after
+`railtrack.check_branch` if its stability is wanted, and any
+`railtrack.SpeedRamp` (from `railtrack.speed_ramp`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from ..solvers.solve import solve
+from .style import BLACK, BLUE, MM, ORANGE, PURPLE, VERMILLION, new_figure
+
+__all__ = ["plot_branch", "ramp_on_branch"]
+
+
+def ramp_on_branch(ramp, branch, samples: int = 4096) -> list[tuple[int, float] | None]:
+    """For each speed of a ramp, the branch point its steady state lies on.
+
+    The branch's crossings of each speed are polished by `railtrack.solve`
+    (`Branch.solutions_at` as starting points), and the ring's least sleeper
+    displacement is compared with theirs.
+
+    Returns, per speed, None where the ring found no periodic state, else
+    (index of the branch point just before the nearest crossing, |min w of
+    the ring - min w of that solution| [m]).
+    """
+    out = []
+    track, train, foundation = branch.problem(0)
+    for speed, low, periodic in zip(ramp.speeds, ramp.minimum, ramp.converged):
+        if not periodic:
+            out.append(None)
+            continue
+        before, _ = branch.crossings(float(speed))
+        at = train.replace(speed=float(speed))
+        dips = []
+        for guess in branch.solutions_at(float(speed)):
+            s = solve(track, at, foundation, harmonics=branch.harmonics, initial=guess)
+            t = np.linspace(0.0, float(s.period), samples, endpoint=False)
+            dips.append(float(s.sleeper_displacement(t).min()) if s.converged else np.nan)
+        gaps = np.abs(np.array(dips) - low)
+        k = int(np.nanargmin(gaps))
+        out.append((int(before[k]), float(gaps[k])))
+    return out
+
+
+def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = None) -> Figure:
+    """-min w [mm] along a speed branch, its folds marked, optionally the linear law's curve.
+
+    Where ``branch.stable`` is set (`railtrack.check_branch`), stable parts
+    are drawn solid and unstable parts dotted, and the points the ring was
+    run on are marked.
+
+    Parameters
+    ----------
+    branch : Branch
+        From ``continuation(..., parameter="speed")``.
+    linear : (speeds, lowest), optional
+        The linear law's min w [m] over speeds [m/s] for comparison.
+    ramps : dict, optional
+        Label -> `railtrack.SpeedRamp`: the ring's steady dips along rising or
+        falling speeds, joined in the order run, each ramp in its own colour,
+        line style and marker (the first, ▶, for a rising ramp, the second,
+        ◀, for a falling one); a cross (x for the first, + for the second)
+        where the response did not repeat (its dip over the last period run).
+
+    Folds are black diamonds; the linear law is grey and dashed.
+    """
+    fig, ax = new_figure()
+    dip = -branch.minimum_displacement() * MM
+    if branch.stable is None:
+        ax.plot(branch.values, dip, "-", color=BLUE, lw=1.5, label="cubic law, continued branch",
+                gid="branch")
+    else:
+        for flag, style, label in ((True, "-", "stable"), (False, ":", "unstable")):
+            drawn = branch.stable == flag
+            drawn[1:] |= drawn[:-1].copy()   # one point on, so that the pieces meet
+            shown = np.where(drawn, dip, np.nan)
+            ax.plot(branch.values, shown, style, color=BLUE, lw=1.5,
+                    label=f"branch, {label} (ring)", gid=f"branch-{label}")
+        checked = np.array(sorted(branch.checks))
+        ax.plot(branch.values[checked], dip[checked], "o", mfc="none", color=BLUE, ms=5,
+                label="checked by the ring", gid="checked")
+    indices = [fold.index for fold in branch.folds]
+    ax.plot(branch.values[indices], dip[indices], "D", color=BLACK, ms=5, label="folds",
+            gid="folds", zorder=4)
+    for n, i in enumerate(indices, 1):
+        ax.annotate(f"{n}: {branch.values[i]:.1f}", (branch.values[i], dip[i]), fontsize=7,
+                    xytext=(4, 4 if n % 2 else -10), textcoords="offset points")
+    if linear is not None:
+        ax.plot(linear[0], -np.asarray(linear[1]) * MM, "--", color="0.4",
+                label="linear law (same k2, η2)", gid="linear")
+    for n, (label, ramp) in enumerate((ramps or {}).items()):
+        colour, marker, cross, style = _RAMP_STYLES[n % len(_RAMP_STYLES)]
+        ramp_dip, periodic = -ramp.minimum * MM, np.asarray(ramp.converged, bool)
+        ax.plot(ramp.speeds, ramp_dip, ls=style, color=colour, lw=0.9, marker=marker, ms=5,
+                markevery=list(periodic), label=label, gid=f"ramp-{n}")
+        if not periodic.all():
+            ax.plot(ramp.speeds[~periodic], ramp_dip[~periodic], cross, color=colour, ms=7,
+                    mew=1.5, label=f"{label}: no periodic state (last period)",
+                    gid=f"ramp-{n}-aperiodic")
+    ax.set_xlabel("train speed v [m/s]")
+    ax.set_ylabel("largest sleeper dip −min w [mm]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    return fig
+
+
+_RAMP_STYLES = ((ORANGE, ">", "x", "-"), (PURPLE, "<", "+", "--"),
+                (VERMILLION, "^", "1", "-."), (BLACK, "v", "2", (0, (6, 2))))
+"""Colour, marker of a periodic state, marker of an aperiodic one and line style of each ramp:
+a rising ramp (the first) points right, a falling one left."""

@@ -1,0 +1,303 @@
+"""`solve`: one entry point for the three methods of the package.
+
+* ``"newton"``: Newton's method on eq. (17) (`railtrack.solvers.newton`);
+* ``"fixed-point"``: the paper's iteration, eq. (21) (`railtrack.solvers.fixed_point`);
+* ``"analytic"``: eq. (23), for a `LinearFoundation` only (`railtrack.equations.linear`).
+
+`solve` checks its arguments, looks the method up in `METHODS`, runs it and
+packs the outcome into a `Solution`.  Not converging is a result
+(``converged=False``), not an exception, unless ``strict=True``.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+
+from .arguments import checked_initial, require_count, require_fraction
+from .diagnosis import convergence_error
+from .fixed_point import SolverOutcome, automatic_split, contraction_factors, iterate_fixed_point
+from .foundation_at_rest import check_foundation_at_rest
+from ..model.foundations import as_foundation
+from ..equations.harmonic_balance import (
+    HarmonicSystem,
+    require_jacobian_samples,
+    residual,
+    residual_norm,
+    two_sided,
+)
+from ..equations.linear import analytic_coefficients
+from .newton import iterate_newton, linear_guess
+from .conditioning import check_conditioning
+from .solution import Solution, TruncationWarning
+from ..model.passage import Passage
+from ..model.track import Track
+from ..model.train import Train
+from .truncation import (
+    MAX_AUTO_HARMONICS,
+    TAIL_FACTOR,
+    auto_samples,
+    estimate_of,
+    grown_harmonics,
+    padded,
+    predict_harmonics,
+    track_spectrum,
+)
+
+__all__ = ["solve", "METHODS", "DEFAULT_ACCURACY", "WARN_TRUNCATION"]
+
+DEFAULT_ACCURACY = 1e-3
+"""Relative truncation error (max norm of w over the period / peak) that harmonics="auto" meets."""
+WARN_TRUNCATION = 1e-2
+"""An explicit m whose estimated truncation error exceeds this warns (`TruncationWarning`)."""
+DEFAULT_TOL = 1e-10
+ANALYTIC_ROUND_OFF = 1e-8
+"""Eq. (23) counts as solved when its residual in eq. (17) is finite and below this."""
+AUTO_ROUNDS = 4
+WARM_START_ABOVE = 60
+"""harmonics="auto" reaches a predicted m above this through a solve at m / 4 first:
+Newton on a kinked law with long lifted stretches needs far fewer steps from there."""
+
+
+def _newton(system: HarmonicSystem, tol, max_iterations, split, initial) -> SolverOutcome:
+    return iterate_newton(system, 100 if max_iterations is None else max_iterations, tol, initial)
+
+
+def _fixed_point(system: HarmonicSystem, tol, max_iterations, split, initial) -> SolverOutcome:
+    return iterate_fixed_point(
+        system, split, 100 if max_iterations is None else max_iterations, tol, initial
+    )
+
+
+def _analytic(system: HarmonicSystem, tol, max_iterations, split, initial) -> SolverOutcome:
+    full = analytic_coefficients(system.passage, system.foundation, system.harmonics)
+    c = full[system.harmonics :]
+    current = residual(system, c)
+    norm = residual_norm(system, current)
+    solved = bool(np.isfinite(norm) and norm <= ANALYTIC_ROUND_OFF)
+    message = f"eq. (23); relative residual {norm:.1e}" + (
+        "" if solved else f" is not below the round-off level {ANALYTIC_ROUND_OFF:.0e}"
+    )
+    return SolverOutcome(c, solved, 0, np.array([norm]), message, np.abs(current)[None, :])
+
+
+METHODS = {"newton": _newton, "fixed-point": _fixed_point, "analytic": _analytic}
+"""Method name -> function(system, tol, max_iterations, split, initial) -> SolverOutcome."""
+
+
+def solve(
+    track: Track,
+    train: Train,
+    foundation,
+    harmonics: int | str = "auto",
+    method: str = "newton",
+    *,
+    accuracy: float | None = None,
+    tol: float | None = None,
+    max_iterations: int | None = None,
+    split: int | str | None = None,
+    samples: int | None = None,
+    initial: np.ndarray | None = None,
+    strict: bool = False,
+    check_foundation: bool = True,
+) -> Solution:
+    """Periodic response of a sleeper on a (nonlinear) foundation, eqs. (12)–(23).
+
+    Parameters
+    ----------
+    track : Track
+        Rail, pads and sleepers, e.g. ``Track.paper()``; scalar fields only.
+    train : Train
+        Wagon length, axles and speed, e.g. ``Train.paper()``; scalar speed.
+    foundation : foundation object or callable
+        `LinearFoundation`, `BilinearFoundation`, `CubicFoundation`, or any
+        callable ``f(w, v)`` returning the foundation force [N] as an array
+        shaped like w.
+    harmonics : int or "auto"
+        m, the number of harmonics kept (eq. 19).  "auto" (default) picks
+        the smallest m whose estimated truncation error is below `accuracy`
+        (`railtrack.solvers.truncation`); the paper uses m = 15.  An explicit m whose
+        estimated error exceeds 1 % warns with a `TruncationWarning`.
+    method : {"newton", "fixed-point", "analytic"}
+    accuracy : float, optional
+        For ``harmonics="auto"``: the largest estimated truncation error of
+        the sleeper displacement, max norm over the period relative to its
+        peak, 0 < accuracy < 1 (default 1e-3).
+    tol : float, optional
+        Converged when the relative residual ``||R|| / ||F||`` of eq. (17)
+        is <= tol, 0 < tol < 1 (default 1e-10).  Not used by "analytic",
+        which is exact up to round-off.
+    max_iterations : int, optional
+        Newton steps (default 100) or fixed-point iterations k (default 100,
+        the paper's choice); 0 evaluates the starting point only.
+    split : int or "auto", optional
+        N0 of eq. (21), fixed point only.  Default (None): m, all harmonics
+        in the first branch of eq. (21).  "auto": the N0 with the smallest
+        largest contraction factor (`railtrack.solvers.fixed_point.automatic_split`).
+    samples : int, optional
+        AFT samples per period, > 4m (default
+        `railtrack.equations.harmonic_balance.default_samples`); needs an explicit m.
+    initial : ndarray, shape (m+1,), optional
+        Starting c_0..c_m for the iterative methods (finite, c_0 real); needs
+        an explicit m.
+    strict : bool
+        Raise `ConvergenceError` instead of returning an unconverged solution.
+    check_foundation : bool
+        Refuse a law with negative stiffness or damping at rest
+        (`railtrack.model.foundations.check_foundation_at_rest`).  A softening law
+        whose stiffness at rest is positive passes; to solve a law that is
+        deliberately unstable at rest, pass False, and check the answer with
+        `railtrack.simulate_time_domain`.
+
+    Returns
+    -------
+    Solution
+        With ``converged`` and ``truncation_error``.  A diverging iteration
+        is reported as ``converged=False`` with a message saying so.
+
+    Raises
+    ------
+    ValueError
+        Unknown method, bad harmonics, accuracy, samples, tol, split or
+        initial, a law that is unstable at rest, or one that returns
+        non-finite forces at the start.
+    TypeError
+        A track that is not a `Track`, or a foundation that is not a law.
+    ConvergenceError
+        Only with ``strict=True``.
+
+    Examples
+    --------
+    >>> from railtrack import Track, Train, CubicFoundation, solve
+    >>> solution = solve(Track.paper(), Train.paper(), CubicFoundation.paper(epsilon=0.8))
+    >>> solution.converged, solution.truncation_error < 1e-3
+    (True, True)
+    >>> w = solution.sleeper_displacement([0.0, 0.1])    # metres, w < 0 is down
+    """
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {sorted(METHODS)}; got {method!r}")
+    passage = Passage(track, train)
+    batched = [f for part in (track, train) for f, v in vars(part).items()
+               if not isinstance(v, tuple) and np.ndim(v) > 0]
+    if batched:
+        raise ValueError(
+            f"solve takes a track and a train with scalar fields; {batched} are arrays "
+            "(for a batch of linear tracks use railtrack.sweep_speeds)"
+        )
+    check_conditioning(passage)
+    automatic = isinstance(harmonics, str) and harmonics == "auto"
+    if not automatic:
+        require_count("harmonics", harmonics, 1)
+    if method == "analytic":
+        ignored = [n for n, v in (("tol", tol), ("max_iterations", max_iterations),
+                                  ("initial", initial)) if v is not None]
+        if ignored:
+            warnings.warn(f"{', '.join(ignored)} not used by method='analytic' (eq. 23 is exact)")
+    if accuracy is not None and not automatic:
+        warnings.warn("accuracy is used by harmonics='auto' only; ignored for an explicit m")
+    accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy", accuracy)
+    tol = DEFAULT_TOL if tol is None else require_fraction("tol", tol)
+    if max_iterations is not None:
+        max_iterations = require_count("max_iterations", max_iterations, 0)
+    if automatic and (samples is not None or initial is not None):
+        raise ValueError("samples and initial need an explicit harmonics=m; 'auto' chooses m itself")
+    if method != "fixed-point" and split is not None:
+        warnings.warn(f"split is used by method='fixed-point' only; ignored by {method!r}")
+    if split is not None and split != "auto":
+        require_count("split (N0)", split, 0)
+    foundation = as_foundation(foundation)
+    if check_foundation:
+        check_foundation_at_rest(foundation, float(passage.pad_stiffness), float(passage.pad_damping))
+
+    if automatic:
+        target, spectrum = predict_harmonics(passage, foundation, accuracy / 2)
+        coarse = method == "analytic" or target <= WARM_START_ABOVE
+        m = target if coarse else max(15, target // 4)
+        system = spectrum.system(passage, foundation, m, auto_samples(m))
+    else:
+        m = target = int(harmonics)
+        if samples is not None:
+            require_jacobian_samples(samples, m)
+        # one evaluation of eq. (3) serves the solve and its truncation estimate
+        spectrum = track_spectrum(passage, TAIL_FACTOR * m)
+        system = spectrum.system(passage, foundation, m, samples)
+        initial = None if initial is None else checked_initial(initial, m)
+
+    iterations = 0
+    for _round in range(AUTO_ROUNDS + 1):
+        outcome, used_split, note = _run(method, system, tol, max_iterations, split, initial)
+        iterations += outcome.iterations
+        estimate, tail = estimate_of(system, outcome.coefficients, spectrum)
+        if not automatic or not outcome.converged or tail is None:
+            break
+        if m >= target and (estimate <= accuracy or m >= MAX_AUTO_HARMONICS):
+            break
+        if m < target:
+            grown = target
+        else:
+            # the solution and its estimated tail are the best spectrum known:
+            # choose the next m from it, as the prediction did from eq. (23)
+            grown = min(MAX_AUTO_HARMONICS, max(
+                math.ceil(1.1 * m), grown_harmonics(outcome.coefficients, tail, 0.8 * accuracy)))
+        if spectrum.upto < TAIL_FACTOR * grown:
+            spectrum = track_spectrum(passage, TAIL_FACTOR * grown)
+        initial = padded(outcome.coefficients, tail, grown) if method != "analytic" else None
+        m = target = grown
+        system = spectrum.system(passage, foundation, grown, auto_samples(grown))
+
+    message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
+    if automatic:
+        message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
+                    f"estimated truncation error {estimate:.1e})")
+    if outcome.converged and np.isfinite(estimate) and estimate > (accuracy if automatic else WARN_TRUNCATION):
+        if not automatic:
+            fix = f"harmonics='auto' picks m = {predict_harmonics(passage, foundation, DEFAULT_ACCURACY / 2)[0]}"
+        elif m >= MAX_AUTO_HARMONICS:
+            fix = f"the largest m that 'auto' takes is {MAX_AUTO_HARMONICS}"
+        else:
+            fix = f"'auto' stopped after {AUTO_ROUNDS + 1} solves"
+        warnings.warn(TruncationWarning(
+            f"harmonics={m}: the estimated truncation error is {estimate:.1%} of the peak "
+            f"sleeper displacement; {fix} (pass a larger harmonics or use 'auto')"
+        ), stacklevel=2)
+    solution = Solution(
+        passage=passage,
+        foundation=foundation,
+        harmonics=system.harmonics,
+        coefficients=two_sided(outcome.coefficients),
+        method=method,
+        converged=outcome.converged,
+        iterations=iterations,
+        residual_history=outcome.residual_history,
+        message=message,
+        split=used_split,
+        samples=system.samples,
+        truncation_error=estimate,
+    )
+    if strict and not solution.converged:
+        raise convergence_error(method, outcome, solution, message)
+    return solution
+
+
+def _run(method, system, tol, max_iterations, split, initial):
+    """Resolve the split for this m, run the method; (outcome, split used, note on the split)."""
+    note, used = "", None
+    if method == "fixed-point":
+        if split is None:
+            used = system.harmonics
+        elif split == "auto":
+            # Factors about Newton's starting guess, not the law at rest: for a
+            # hardening law under a heavy load the two differ by orders.
+            start = linear_guess(system) if initial is None else initial
+            used = automatic_split(system, start)
+            worst = float(contraction_factors(system, used, start).max())
+            if worst >= 1:
+                note = (f"no split N0 in 0..{system.harmonics} makes every contraction factor "
+                        f"of eq. (21) < 1 (the best, N0 = {used}, has {worst:.3g})")
+        elif split > system.harmonics:
+            raise ValueError(f"split (N0) must be 'auto' or an integer in 0..{system.harmonics}; got {split!r}")
+        else:
+            used = int(split)
+    return METHODS[method](system, tol, max_iterations, used, initial), used, note

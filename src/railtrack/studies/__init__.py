@@ -1,0 +1,10 @@
+"""Studies of many solutions, built on the solvers and the ring.
+
+`sweep` (many solves over any field, batched), `continuation` and `branch`
+(a branch of periodic solutions followed through its folds), `stability`
+(does the ring stay on a solution?), `branch_stability` (the same along a
+branch) and `ramp` (the ring through rising or falling speeds).
+
+Imports: any layer below: `railtrack.model`, `railtrack.equations`,
+`railtrack.solvers`, `railtrack.timedomain`.
+"""

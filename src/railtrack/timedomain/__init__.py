@@ -1,0 +1,12 @@
+"""The time-domain ring: an independent check of the harmonic-balance results.
+
+One wagon length of track closed into a ring of finite elements (`fem`),
+stepped by Newmark's scheme (`newmark`) until each period repeats the last
+(`simulation`, whose `simulate_time_domain` is the entry point); the time
+step and its error (`timestep`), the run's cost estimated beforehand
+(`runcost`), the ring started from a harmonic-balance solution
+(`ring_state`), its forces and moments (`ring_outputs`), its result
+(`td_solution`) and the spectrum of a record (`spectrum`).
+
+Imports: `railtrack.model`, `railtrack.equations` and `railtrack.solvers`.
+"""

@@ -1,0 +1,266 @@
+"""Finite elements of one wagon length of track closed into a ring.
+
+The verification model of `railtrack.timedomain.simulation` discretises the same track
+as the semi-analytical method, but in space and time:
+
+* the rail, an Euler–Bernoulli beam (eq. 1), by Hermite cubic elements with
+  the consistent mass matrix, ``elements_per_span`` per sleeper span;
+* each sleeper, a point mass M (eq. 4), joined to the rail node above it by
+  the pad spring–dashpot k1, eta1 (eqs. 4–5);
+* the moving wheels, as consistent nodal loads: each wheel load -Q is spread
+  on the four degrees of freedom of the element it stands on with the Hermite
+  shape functions evaluated at its position (the work-equivalent loads).
+
+The train repeats every H (eq. 9), and so does the periodic steady state, so
+one wagon length H with its two ends identified (a ring) carries that state
+exactly; this needs H / L to be an integer, the number of sleepers on the
+ring.  The foundation f(w, w') is left to `railtrack.timedomain.simulation`: it is the
+only nonlinear part.
+
+Degrees of freedom: rail node j (at x = j h, h = L / elements_per_span) has
+deflection ``2 j`` and rotation ``2 j + 1``; sleeper i (at x = i L, under
+rail node ``i * elements_per_span``) has ``2 * n_nodes + i``.  w is positive
+upward, rotations are dw/dx.  All units SI.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+from numpy.typing import ArrayLike
+
+from ..model.passage import Passage
+
+__all__ = [
+    "RingMesh",
+    "sleepers_on_ring",
+    "hermite_shape_functions",
+    "beam_element_matrices",
+    "ring_mesh",
+    "wheel_positions",
+    "wheel_load_entries",
+]
+
+RING_TOLERANCE = 1e-9
+"""Largest |H/L - round(H/L)| accepted as an integer number of sleepers."""
+
+
+def sleepers_on_ring(passage: Passage) -> int:
+    """Number of sleepers H / L on a ring one wagon long.
+
+    Raises
+    ------
+    ValueError
+        If H / L is not an integer within `RING_TOLERANCE`: a ring of length H
+        would then not be periodic in the sleepers.
+    """
+    ratio = float(passage.wagon_length) / float(passage.sleeper_spacing)
+    count = int(round(ratio))
+    if count < 1 or abs(ratio - count) > RING_TOLERANCE:
+        raise ValueError(
+            "the time-domain ring model needs H/L (wagon_length / sleeper_spacing) "
+            f"to be an integer; got H/L = {ratio:.6g} (H = {float(passage.wagon_length):g} m, "
+            f"L = {float(passage.sleeper_spacing):g} m)"
+        )
+    return count
+
+
+def hermite_shape_functions(xi: ArrayLike, length: float) -> np.ndarray:
+    """Hermite cubics of a beam element at local coordinate xi in [0, 1].
+
+    Parameters
+    ----------
+    xi : array_like
+        Position in the element divided by its length [-].
+    length : float
+        Element length h [m].
+
+    Returns
+    -------
+    ndarray, shape (..., 4)
+        Weights of (w_a, theta_a, w_b, theta_b): the deflection at xi is their
+        dot product with the nodal values.  The rotation shapes carry the
+        factor h so that theta is dw/dx [rad].
+    """
+    xi = np.asarray(xi, dtype=float)
+    xi2, xi3 = xi * xi, xi * xi * xi
+    return np.stack(
+        [
+            1.0 - 3.0 * xi2 + 2.0 * xi3,
+            length * (xi - 2.0 * xi2 + xi3),
+            3.0 * xi2 - 2.0 * xi3,
+            length * (xi3 - xi2),
+        ],
+        axis=-1,
+    )
+
+
+def beam_element_matrices(
+    bending_stiffness: float, linear_mass: float, length: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Stiffness [N/m, N, N m] and consistent mass [kg, kg m, kg m^2] of one element, eq. (1).
+
+    The classical 4 x 4 matrices of the Hermite cubic Euler–Bernoulli element
+    for DOFs (w_a, theta_a, w_b, theta_b).  Between point forces the static
+    beam deflection is a cubic, so nodal values of a static solution are
+    exact; only the inertia is approximated.
+    """
+    h = length
+    stiffness = bending_stiffness / h**3 * np.array(
+        [
+            [12.0, 6.0 * h, -12.0, 6.0 * h],
+            [6.0 * h, 4.0 * h * h, -6.0 * h, 2.0 * h * h],
+            [-12.0, -6.0 * h, 12.0, -6.0 * h],
+            [6.0 * h, 2.0 * h * h, -6.0 * h, 4.0 * h * h],
+        ]
+    )
+    mass = linear_mass * h / 420.0 * np.array(
+        [
+            [156.0, 22.0 * h, 54.0, -13.0 * h],
+            [22.0 * h, 4.0 * h * h, 13.0 * h, -3.0 * h * h],
+            [54.0, 13.0 * h, 156.0, -22.0 * h],
+            [-13.0 * h, -3.0 * h * h, -22.0 * h, 4.0 * h * h],
+        ]
+    )
+    return stiffness, mass
+
+
+@dataclass(frozen=True, eq=False)
+class RingMesh:
+    """Linear part of the ring: rail, pads and sleeper masses, without the foundation.
+
+    Attributes
+    ----------
+    passage : Passage
+    elements_per_span : int
+        Rail elements between neighbouring sleepers.
+    n_sleepers : int
+        H / L.
+    element_length : float
+        h = L / elements_per_span [m].
+    mass, damping, stiffness : scipy.sparse.csc_matrix, shape (n_dofs, n_dofs)
+        Global M, C, K of the rail (eq. 1), pads (eq. 5) and sleepers (eq. 4)
+        [kg], [N s/m], [N/m] (rotational entries in the matching units).
+    sleeper_dofs : ndarray of int, shape (n_sleepers,)
+        DOF of sleeper i.
+    rail_dofs : ndarray of int, shape (n_sleepers,)
+        Deflection DOF of the rail node above sleeper i.
+    """
+
+    passage: Passage
+    elements_per_span: int
+    n_sleepers: int
+    element_length: float
+    mass: sp.csc_matrix
+    damping: sp.csc_matrix
+    stiffness: sp.csc_matrix
+    sleeper_dofs: np.ndarray
+    rail_dofs: np.ndarray
+
+    @property
+    def n_nodes(self) -> int:
+        """Rail nodes on the ring (the node at x = H is node 0)."""
+        return self.n_sleepers * self.elements_per_span
+
+    @property
+    def n_dofs(self) -> int:
+        return 2 * self.n_nodes + self.n_sleepers
+
+
+def ring_mesh(passage: Passage, elements_per_span: int) -> RingMesh:
+    """Assemble M, C, K of the ring of length H (see the module docstring).
+
+    Raises
+    ------
+    ValueError
+        If H / L is not an integer (`sleepers_on_ring`).
+    """
+    n_sleepers = sleepers_on_ring(passage)
+    n_nodes = n_sleepers * elements_per_span
+    n_dofs = 2 * n_nodes + n_sleepers
+    h = float(passage.sleeper_spacing) / elements_per_span
+    k_element, m_element = beam_element_matrices(
+        float(passage.rail_bending_stiffness), float(passage.rail_linear_mass), h
+    )
+
+    # Element e joins node e to node e + 1, and the last element closes the
+    # ring on node 0: that identification is the periodic boundary condition.
+    first = np.arange(n_nodes)
+    second = (first + 1) % n_nodes
+    element_dofs = np.stack([2 * first, 2 * first + 1, 2 * second, 2 * second + 1], axis=1)
+    rows = np.repeat(element_dofs, 4, axis=1).ravel()
+    cols = np.tile(element_dofs, (1, 4)).ravel()
+    shape = (n_dofs, n_dofs)
+    k_rail = sp.coo_matrix((np.tile(k_element.ravel(), n_nodes), (rows, cols)), shape)
+    m_rail = sp.coo_matrix((np.tile(m_element.ravel(), n_nodes), (rows, cols)), shape)
+
+    sleeper_dofs = 2 * n_nodes + np.arange(n_sleepers)
+    rail_dofs = 2 * elements_per_span * np.arange(n_sleepers)
+    pad_rows = np.concatenate([rail_dofs, sleeper_dofs, rail_dofs, sleeper_dofs])
+    pad_cols = np.concatenate([rail_dofs, sleeper_dofs, sleeper_dofs, rail_dofs])
+    pad_sign = np.repeat([1.0, 1.0, -1.0, -1.0], n_sleepers)
+    pad = sp.coo_matrix((pad_sign, (pad_rows, pad_cols)), shape)
+    sleepers = sp.coo_matrix(
+        (np.full(n_sleepers, float(passage.sleeper_mass)), (sleeper_dofs, sleeper_dofs)), shape
+    )
+    return RingMesh(
+        passage=passage,
+        elements_per_span=elements_per_span,
+        n_sleepers=n_sleepers,
+        element_length=h,
+        mass=(m_rail + sleepers).tocsc(),
+        damping=(float(passage.pad_damping) * pad).tocsc(),
+        stiffness=(k_rail + float(passage.pad_stiffness) * pad).tocsc(),
+        sleeper_dofs=sleeper_dofs,
+        rail_dofs=rail_dofs,
+    )
+
+
+def wheel_positions(passage: Passage, times: ArrayLike) -> np.ndarray:
+    """Positions of the axles of a wagon on the ring, in [0, H) [m], eq. (9).
+
+    The first axle is at x = v t and axle j at d_j behind it, modulo H;
+    every other wagon's axles fall on the same ring positions.
+
+    Returns
+    -------
+    ndarray, shape (len(times), J)
+    """
+    times = np.atleast_1d(np.asarray(times, dtype=float))
+    front = float(passage.speed) * times
+    offsets = np.asarray(passage.axle_positions, dtype=float)
+    return np.mod(front[:, None] - offsets[None, :], float(passage.wagon_length))
+
+
+def wheel_load_entries(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """Consistent nodal loads of the wheels at each time, as sparse entries.
+
+    Wheel j pushes down with -Q_j; its work-equivalent nodal loads are -Q_j
+    times the Hermite shape functions at its position in its element.
+
+    Parameters
+    ----------
+    mesh : RingMesh
+    times : array_like, shape (n_t,)
+        [s].
+
+    Returns
+    -------
+    dofs : ndarray of int, shape (n_t, 4 J)
+        Rail DOFs loaded at each time (4 per wheel; may repeat if two wheels
+        stand on the same element, so accumulate with ``np.add.at``).
+    values : ndarray, shape (n_t, 4 J)
+        Nodal forces [N] and moments [N m].
+    """
+    x = wheel_positions(mesh.passage, times)
+    h = mesh.element_length
+    element = np.minimum(np.floor(x / h).astype(int), mesh.n_nodes - 1)
+    xi = np.clip(x / h - element, 0.0, 1.0)
+    following = (element + 1) % mesh.n_nodes
+    dofs = np.stack([2 * element, 2 * element + 1, 2 * following, 2 * following + 1], axis=-1)
+    loads = np.asarray(mesh.passage.axle_loads, dtype=float)
+    values = -loads[None, :, None] * hermite_shape_functions(xi, h)
+    n_t = x.shape[0]
+    return dofs.reshape(n_t, -1), values.reshape(n_t, -1)

@@ -1,0 +1,77 @@
+"""The result of the time-domain check, `railtrack.simulate_time_domain`."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..model.passage import Passage
+
+__all__ = ["TimeDomainSolution"]
+
+
+@dataclass(frozen=True, eq=False)
+class TimeDomainSolution:
+    """Periodic steady response of the FE ring found by `simulate_time_domain`.
+
+    Attributes
+    ----------
+    times : ndarray, shape (steps_per_period,)
+        One period, t = 0, dt, ..., T - dt [s]; t = 0 when a wagon's first axle is
+        above sleeper 0.
+    sleeper_displacement : ndarray, shape (steps_per_period,)
+        w(t) of sleeper 0 over the last period [m], positive upward.
+    rail_displacement : ndarray, shape (steps_per_period,)
+        Rail deflection above sleeper 0 over the last period [m].
+    sleeper_displacements : ndarray, shape (steps_per_period, n_sleepers)
+        All sleepers over the last period [m]; in the steady state sleeper i
+        lags sleeper 0 by i L / v.
+    rail_displacement_midspan, bending_moment_above_sleeper, bending_moment_midspan,
+    rail_seat_load, foundation_force : ndarray, shape (steps_per_period,)
+        Over the last period: rail at x = L / 2 [m]; EI w'' at x = 0 and
+        L / 2, sagging positive [N m]; pad force on sleeper 0 and force on
+        its foundation, positive in compression [N] (`railtrack.timedomain.ring_outputs`).
+    periods : int
+        Periods integrated.
+    converged : bool
+        Whether the last period's sleeper-0 response differed from the one
+        before by at most ``tol`` times its peak.
+    period_change : ndarray, shape (periods - 1,)
+        max |w_k - w_{k-1}| / max |w_k| between consecutive periods k [-].
+    elements_per_span : int
+    steps_per_period : int
+    passage : Passage
+    foundation : object
+    step_error : float
+        Estimated time-step error, max |w - w_exact| of sleeper 0 over its
+        peak [-] (`railtrack.timedomain.timestep.estimate_step_error`, for the track
+        linearized about its static state); NaN if not estimated.
+    sleeper_history : ndarray, shape (periods, steps_per_period)
+        Sleeper 0 over every period integrated [m]: row k is period k + 1.
+    final_state : (ndarray, ndarray), shape (n_dofs,) each
+        Ring displacements and velocities at the end of the last period
+        [m, rad], [m/s, rad/s]: the wheels are back at their t = 0 places,
+        so this is a valid ``start`` for another run.
+    """
+
+    times: np.ndarray
+    sleeper_displacement: np.ndarray
+    rail_displacement: np.ndarray
+    sleeper_displacements: np.ndarray
+    periods: int
+    converged: bool
+    period_change: np.ndarray
+    elements_per_span: int
+    steps_per_period: int
+    passage: Passage | None = None
+    foundation: Any = None
+    step_error: float = float("nan")
+    rail_displacement_midspan: np.ndarray | None = None
+    bending_moment_above_sleeper: np.ndarray | None = None
+    bending_moment_midspan: np.ndarray | None = None
+    rail_seat_load: np.ndarray | None = None
+    foundation_force: np.ndarray | None = None
+    sleeper_history: np.ndarray | None = None
+    final_state: tuple[np.ndarray, np.ndarray] | None = None
