@@ -4,7 +4,7 @@ Run with ``make bench``.  Prints Markdown tables: the machine, the median
 wall time of each solve (median over several runs, each run timing a batch
 of repeated solves), and the iterations each method needs to reach a
 relative residual of 1e-10 of eq. (17).  Each solve includes its
-truncation estimate; "auto" also picks m (railtrack.truncation).  Times are
+truncation estimate; "auto" also picks m (railtrack.solvers.truncation).  Times are
 wall-clock on whatever else the machine is doing; the iteration counts are
 exact.
 """

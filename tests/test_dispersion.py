@@ -1,4 +1,4 @@
-"""Free waves of the smeared track (railtrack.dispersion), against independent truth."""
+"""Free waves of the smeared track (railtrack.equations.dispersion), against independent truth."""
 
 import numpy as np
 import pytest

@@ -1,4 +1,4 @@
-"""The energy balance of the steady state (railtrack.energy).
+"""The energy balance of the steady state (railtrack.solvers.energy).
 
 The rail has no damping, so over one period the work of a wagon's moving
 wheel loads, shared among its H/L sleepers, must be what one sleeper's pad

@@ -1,4 +1,4 @@
-"""railtrack.explorer: the classroom explorer (sliders -> solve -> three panels).
+"""railtrack.plotting.explorer: the classroom explorer (sliders -> solve -> three panels).
 
 Oracles: `rt.solve` called directly on the same case built by hand from the
 presets (Track.paper, Train.*, the foundation laws' .paper()); the bilinear

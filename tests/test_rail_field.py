@@ -1,4 +1,4 @@
-"""railtrack.rail_field and the Solution's rail between sleepers.
+"""railtrack.equations.rail_field and the Solution's rail between sleepers.
 
 Oracles, each independent of the closed form under test:
 * eq. (3) and today's ``rail_displacement(t)`` at x = 0;
