@@ -207,7 +207,7 @@ def plot_comparison(cases: Sequence[CaseComparison], zoom: int = 25) -> Figure:
         joined by " = "; t in s on x (ms in the zoom), w in mm on y.
     """
     groups = distinct_cases(cases)
-    fig, axes = new_figure(len(groups), 2, width=7.5, height=1.9, squeeze=False,
+    fig, axes = new_figure(len(groups), 2, width=6.5, height=1.5, squeeze=False,
                            gridspec_kw=dict(width_ratios=(1.7, 1.0)))
     styles = {"fe": dict(color="0.7", ls="-", lw=4.0), "reference": dict(color="black", ls="--", lw=1.0),
               "newton": dict(color=VERMILLION, ls="-.", lw=1.1)}
