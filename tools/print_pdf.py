@@ -13,7 +13,7 @@ in the HTML book; the page's own print style (book/_static/custom.css)
 removes the navigation and wraps code instead of cutting it.
 
 The page is served from 127.0.0.1 and Chromium resolves no other host, as in
-the browser test, whose set-up (tests/rendered/checks.py) is reused.
+the browser test, whose set-up (tests/rendered/browser.py) is reused.
 """
 
 from __future__ import annotations
@@ -23,9 +23,8 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tests" / "rendered"))
 
-import checks  # noqa: E402  (the browser test's server and browser set-up)
+import browser  # noqa: E402  (the local server and headless Chromium, shared with the browser test)
 
 LOAD_TIMEOUT = 300  # s
 A4 = {"paperWidth": 8.27, "paperHeight": 11.69}  # inches
@@ -49,7 +48,7 @@ def print_pdf(html_dir: Path, out: Path) -> int:
     """Print ``html_dir``'s single page to ``out``; return the number of pages."""
     from selenium.webdriver.support.ui import WebDriverWait
 
-    chromium, chromedriver = checks.find_browser()
+    chromium, chromedriver = browser.find_browser()
     if not (chromium and chromedriver):
         raise SystemExit("make pdf needs chromium and chromedriver "
                          "(Debian packages chromium and chromium-driver)")
@@ -61,12 +60,12 @@ def print_pdf(html_dir: Path, out: Path) -> int:
     if nested.exists():
         page = "book.html"
         (html_dir / page).write_bytes(nested.read_bytes())
-    with checks.serve_directory(html_dir) as base, \
-            checks.headless_chromium(chromium, chromedriver) as driver:
+    with browser.serve_directory(html_dir) as base, \
+            browser.headless_chromium(chromium, chromedriver) as driver:
         # One page holds the whole book: MathJax needs longer than on a chapter.
         driver.set_page_load_timeout(LOAD_TIMEOUT)
         driver.set_script_timeout(LOAD_TIMEOUT)
-        state = checks.load_page(driver, base + page)
+        state = browser.load_page(driver, base + page)
         if state["mathjax"] != "ok":
             raise SystemExit(f"MathJax did not typeset the page: {state['mathjax']}")
         WebDriverWait(driver, LOAD_TIMEOUT, poll_frequency=0.2).until(
