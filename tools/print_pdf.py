@@ -24,6 +24,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))  # also when imported by a test
 import browser  # noqa: E402  (the local server and headless Chromium, shared with the browser test)
 
 LOAD_TIMEOUT = 300  # s
