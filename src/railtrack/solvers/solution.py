@@ -15,7 +15,8 @@ from ..equations.bowl import DeflectionBowl, deflection_bowl
 from ..equations.load import load_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
 
-__all__ = ["Solution", "ConvergenceError", "TruncationWarning", "DeflectionBowl", "fourier_series"]
+__all__ = ["Solution", "ConvergenceError", "ConvergenceWarning", "TruncationWarning", "DeflectionBowl",
+           "fourier_series"]
 
 
 def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) -> np.ndarray:
@@ -40,6 +41,17 @@ class ConvergenceError(RuntimeError):
         super().__init__(message)
         self.solution = solution
         self.slow_harmonics = slow_harmonics
+
+
+class ConvergenceWarning(UserWarning):
+    """A solve returned ``converged=False``: its answer is not a solution of eq. (17).
+
+    Issued by `railtrack.solve` (and the studies built on it) unless
+    ``strict=True``, which raises `ConvergenceError` instead.  The message
+    says why the iteration stopped and what to try; where Newton stalls as
+    it does near a fold of the response curve, it names `railtrack.continuation`.
+    Silence it with ``warnings.simplefilter("ignore", rt.ConvergenceWarning)``.
+    """
 
 
 class TruncationWarning(UserWarning):
