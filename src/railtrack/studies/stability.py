@@ -202,6 +202,13 @@ def check_stability(solution, periods: int = 20, tol: float = 1e-2, elements_per
         raise ValueError(f"periods must be an integer >= 2; got {periods!r}")
     if not (np.isfinite(tol) and tol > 0):
         raise ValueError(f"tol must be a finite number > 0; got {tol!r}")
+    if not getattr(solution, "converged", False):
+        # An unconverged iterate is no periodic solution: the ring would leave
+        # it whatever its stability, and the verdict would say "leaves".
+        raise ValueError(
+            "check_stability needs a converged solution; this one is not converged "
+            f"({getattr(solution, 'message', 'no message')}).  Solve again with more "
+            "iterations, another method or a nearby start (rt.continuation)")
     train = tiled_train(solution.train, wagons)
     sleepers = round(float(train.wagon_length) / float(solution.track.sleeper_spacing))
     steps = 80 * sleepers if steps_per_period is None else steps_per_period
@@ -232,7 +239,9 @@ def check_stability(solution, periods: int = 20, tol: float = 1e-2, elements_per
     record = np.concatenate(records)
     distance = np.max(np.abs(record - reference), axis=1) / peak
     change = float(last.period_change[-1]) if last.period_change.size else float("nan")
-    spectrum = record_spectrum(record[record.shape[0] // 2:].ravel(), float(solution.period),
+    # The last half of the run, but at least two ring periods (periods=2 leaves one in the half).
+    tail = record[min(record.shape[0] // 2, max(record.shape[0] - 2, 0)):]
+    spectrum = record_spectrum(tail.ravel(), float(solution.period),
                                steps // wagons)
     growth, change_growth = _growth(distance), _change_growth(record, peak)
     low, high = (float(f(last.sleeper_displacements)) for f in (np.min, np.max))
@@ -249,8 +258,9 @@ def check_stability(solution, periods: int = 20, tol: float = 1e-2, elements_per
                    f"distance growth {growth:.3g}, change growth {change_growth:.3g} per period")
     elif last.converged:
         verdict = "leaves"
-        message = (f"leaves: the distance grew {growth:.3g}-fold per period and the ring settled after "
-                   f"{record.shape[0]} periods on another periodic state, sleepers between "
+        message = (f"leaves: the distance grew {growth:.3g}-fold per period and the ring "
+                   f"settled after {record.shape[0]} periods on another periodic state, "
+                   "sleepers between "
                    f"{1e3 * low:.4g} and {1e3 * high:.4g} mm (the solution: "
                    f"{1e3 * reference.min():.4g} to {1e3 * reference.max():.4g} mm)")
     else:

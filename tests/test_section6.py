@@ -1,0 +1,43 @@
+"""Issue 18 section 6: the smaller items of the new surface, each with a test that failed before.
+
+Truths used: the documented minimum of `check_stability` (periods >= 2); a
+solve stopped after one Newton step (its own `converged` flag says no); the
+slider range of `explore`; the run-cost estimate against the ring's actual
+size; the spacing of sleepers against the span of positions asked for; the
+digits of a double (an x whose phase x omega / v exceeds 2^53 ulp carries no
+digit); the inputs of each message against the cause it names.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+import railtrack as rt
+from railtrack import CubicFoundation, LinearFoundation, Track, Train, solve
+from railtrack.studies.stability import check_stability
+
+TRACK, TRAIN = Track.paper(), Train.paper()
+
+
+# -- 1. check_stability(periods=2), the documented minimum -----------------------------------
+
+def test_check_stability_runs_at_its_documented_minimum_of_two_periods():
+    s = solve(TRACK, TRAIN, LinearFoundation.paper(), harmonics=60)
+    check = check_stability(s, periods=2, elements_per_span=2, steps_per_period=600)
+    # A linear track has one periodic solution, stable: the ring stays on it.
+    assert check.verdict == "stays" and check.periods == 2
+
+
+# -- 2. check_stability refuses an unconverged solution ---------------------------------------
+
+def test_check_stability_refuses_an_unconverged_solution():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s = solve(TRACK, TRAIN, CubicFoundation.paper(epsilon=0.8), harmonics=20,
+                  max_iterations=1)
+    assert not s.converged
+    with pytest.raises(ValueError, match="not converged"):
+        check_stability(s, periods=2, elements_per_span=2, steps_per_period=600)
