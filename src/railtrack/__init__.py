@@ -41,7 +41,7 @@ from .equations.linear import analytic_coefficients, sweep_extremes, sweep_speed
 from .equations.rail_field import offset_receptance
 from .equations.receptance import rail_receptance, rail_receptance_lattice_sum
 from .equations.sleeper import rail_coupling
-from .solvers.solution import ConvergenceError, Solution, TruncationWarning
+from .solvers.solution import ConvergenceError, ConvergenceWarning, Solution, TruncationWarning
 from .solvers.solve import METHODS, solve
 from .studies.sweep import Sweep, sweep
 from .studies.continuation import continuation
@@ -95,6 +95,7 @@ __all__ = [
     "SpeedRamp",
     "Solution",
     "ConvergenceError",
+    "ConvergenceWarning",
     "TruncationWarning",
     "analytic_coefficients",
     "sweep_speeds",
