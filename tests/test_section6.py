@@ -41,3 +41,30 @@ def test_check_stability_refuses_an_unconverged_solution():
     assert not s.converged
     with pytest.raises(ValueError, match="not converged"):
         check_stability(s, periods=2, elements_per_span=2, steps_per_period=600)
+
+
+# -- 3. explore() takes a setting outside a slider's range as given, never clamped ------------
+
+def test_explore_keeps_a_setting_outside_the_slider_range():
+    pytest.importorskip("ipywidgets")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from railtrack.plotting import explorer as ex
+
+    asked = {"speed": 900.0, "pad_damping": 5000.0, "foundation_stiffness": 0.5}
+    for name, value in asked.items():          # each outside the slider's own range
+        assert not ex.CONTROLS[name][1] <= value <= ex.CONTROLS[name][2]
+    panel = rt.explore(**asked)
+    for name, value in asked.items():
+        assert panel.controls[name].value == value
+        assert panel.state.values[name] == value
+    # What is drawn is the case asked for, solved directly.
+    direct = ex.solve_case(**asked)
+    assert np.max(np.abs(panel.state.solution.coefficients - direct.coefficients)) < 1e-15
+
+
+def test_explore_refuses_a_setting_that_is_not_a_finite_number():
+    pytest.importorskip("ipywidgets")
+    with pytest.raises(ValueError, match="speed must be a finite number"):
+        rt.explore(speed=float("inf"))

@@ -188,6 +188,15 @@ def _png_output(state: ExplorerState) -> dict:
         "image/png": base64.b64encode(buffer.getvalue()).decode("ascii"), "text/plain": state.title}}
 
 
+def _slider_value(name: str, value: Any) -> float:
+    """`value` as a float for the slider `name`; ValueError unless a finite real number."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)) \
+            or not np.isfinite(value):
+        raise ValueError(f"{name} must be a finite number in the units of its slider "
+                         f"({CONTROLS[name][0]}); got {value!r}")
+    return float(value)
+
+
 def explore(**initial) -> ipywidgets.VBox:
     """Sliders for speed, dampings, foundation stiffness, law, e, ε and train; live panels.
 
@@ -196,6 +205,9 @@ def explore(**initial) -> ipywidgets.VBox:
     shows `explorer_figure`, with attributes ``controls`` (name -> widget),
     ``output`` and ``state`` (the `ExplorerState` drawn last).  Sliders have
     ``continuous_update=False``: one solve per release, not one per pixel dragged.
+    A setting outside a slider's range (e.g. ``speed=900``) widens that slider
+    to it rather than being clamped; one that is not a finite number raises
+    ValueError.
     """
     try:
         import ipywidgets as widgets
@@ -211,9 +223,13 @@ def explore(**initial) -> ipywidgets.VBox:
             controls[name] = widgets.Dropdown(options=[(text, key) for key, text in spec.items()],
                                               value=values[name], description=name, style=wide)
         else:
+            value = _slider_value(name, values[name])
+            # A slider clamps a value outside [min, max] without a word: widen it instead,
+            # so that the case drawn is the one asked for (solve refuses what is unphysical).
             controls[name] = widgets.FloatSlider(
-                value=values[name], min=spec[1], max=spec[2], step=spec[3], description=spec[0],
-                continuous_update=False, style=wide, layout=widgets.Layout(width="36em"))
+                value=value, min=min(spec[1], value), max=max(spec[2], value), step=spec[3],
+                description=spec[0], continuous_update=False, style=wide,
+                layout=widgets.Layout(width="36em"))
     output = widgets.Output(layout=widgets.Layout(min_height="40em"))
     panel = widgets.VBox([*controls.values(), output])
     panel.controls, panel.output = controls, output
