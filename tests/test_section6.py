@@ -68,3 +68,20 @@ def test_explore_refuses_a_setting_that_is_not_a_finite_number():
     pytest.importorskip("ipywidgets")
     with pytest.raises(ValueError, match="speed must be a finite number"):
         rt.explore(speed=float("inf"))
+
+
+# -- 5. deflection_bowl over a window of millions of sleepers is refused at once --------------
+
+def test_deflection_bowl_refuses_a_window_of_millions_of_sleepers_at_once():
+    import time
+
+    s = solve(TRACK, TRAIN, LinearFoundation.paper())
+    span = float(TRACK.sleeper_spacing)
+    sleepers = 2 * int(np.floor(1e6 / span)) + 1          # k L within [-1e6, 1e6] m
+    start = time.perf_counter()
+    with pytest.raises(ValueError, match=f"{sleepers} sleepers"):
+        s.deflection_bowl(0.0, [-1e6, 0.0, 1e6])
+    assert time.perf_counter() - start < 1.0               # refused before it builds them
+    # A long but reasonable window is still drawn (10 km: 16,667 sleepers).
+    bowl = s.deflection_bowl(0.0, [-5e3, 0.0, 5e3])
+    assert bowl.sleepers.size == 2 * int(np.floor(5e3 / span)) + 1

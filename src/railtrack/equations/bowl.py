@@ -13,7 +13,14 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
-__all__ = ["DeflectionBowl", "deflection_bowl"]
+__all__ = ["DeflectionBowl", "deflection_bowl", "MAX_BOWL_ENTRIES"]
+
+MAX_BOWL_ENTRIES = 20_000_000
+"""Largest table a bowl builds: sleepers x harmonics, instants x sleepers, or wheels [-].
+
+2e7 complex entries are 320 MB and about a second; the paper's wagon at
+m = 60 reaches it with a window of some 100 km of sleepers.
+"""
 
 
 class DeflectionBowl(NamedTuple):
@@ -75,11 +82,15 @@ def deflection_bowl(solution, t: ArrayLike, x: ArrayLike) -> DeflectionBowl:
     times = np.asarray(t, dtype=float)
     instants = np.atleast_1d(times)
     span, speed = float(solution.passage.sleeper_spacing), float(solution.passage.speed)
-    positions = span * np.arange(np.ceil(x.min() / span), np.floor(x.max() / span) + 1)
+    first, last = np.ceil(x.min() / span), np.floor(x.max() / span)
     wagon = float(solution.passage.wagon_length)
     reach = speed * instants
-    wagons = np.arange(np.floor((reach.min() - x.max()) / wagon),
-                       np.ceil((reach.max() - x.min()) / wagon) + 2)
+    low, high = (np.floor((reach.min() - x.max()) / wagon),
+                 np.ceil((reach.max() - x.min()) / wagon) + 2)
+    _check_size(last - first + 1, instants.size, solution.frequencies.size,
+                (high - low) * instants.size * len(solution.passage.axle_positions), x)
+    positions = span * np.arange(first, last + 1)
+    wagons = np.arange(low, high)
     fronts = reach[:, None] - wagon * wagons[None, :]
     offsets = np.asarray(solution.passage.axle_positions, dtype=float)
     wheels = (fronts[:, :, None] - offsets).reshape(len(instants), -1)
@@ -92,3 +103,18 @@ def deflection_bowl(solution, t: ArrayLike, x: ArrayLike) -> DeflectionBowl:
     if times.ndim == 0:
         return DeflectionBowl(x, rail[0], positions, sleepers[0], np.sort(wheels[0][inside[0]]))
     return DeflectionBowl(x, rail, positions, sleepers, wheels[:, inside.any(axis=0)])
+
+
+def _check_size(sleepers: float, instants: int, harmonics: int, wheels: float,
+                x: np.ndarray) -> None:
+    """Refuse a bowl whose tables would exceed `MAX_BOWL_ENTRIES` (before building them)."""
+    biggest = max(sleepers * max(harmonics, instants), wheels)
+    if biggest > MAX_BOWL_ENTRIES:
+        raise ValueError(
+            f"the window [{x.min():g}, {x.max():g}] m holds {sleepers:.0f} sleepers "
+            f"(and {wheels:.0f} wheel positions over {instants} instant(s)): its tables "
+            f"would have {biggest:.3g} entries, above {MAX_BOWL_ENTRIES:.0e} "
+            "(railtrack.equations.bowl.MAX_BOWL_ENTRIES).  A bowl draws the sleepers "
+            "between the least and the greatest x: ask for a shorter window, or for the "
+            "sleepers you need with solution.sleeper_displacement(t - k L / v) and the rail "
+            "with solution.rail_displacement(t, x)")
