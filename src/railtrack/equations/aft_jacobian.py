@@ -12,7 +12,7 @@ import numpy as np
 
 from .harmonic_balance import HarmonicSystem, _checked_force, require_jacobian_samples, synthesize
 
-__all__ = ["residual_jacobian"]
+__all__ = ["residual_jacobian", "tangent_harmonics"]
 
 
 def residual_jacobian(system: HarmonicSystem, coefficients: np.ndarray) -> np.ndarray:
@@ -32,19 +32,10 @@ def residual_jacobian(system: HarmonicSystem, coefficients: np.ndarray) -> np.nd
     Jacobians is returned.
     """
     m = system.harmonics
-    require_jacobian_samples(system.samples, m)
     coefficients = np.asarray(coefficients)
     batch = coefficients.shape[:-1]
-    w, v = synthesize(system, coefficients)
-    _checked_force(system, w, v)
-    stiffness, damping = system.foundation.tangent(w, v)
-    tangent = np.empty((2,) + batch + (system.samples,))
-    tangent[0], tangent[1] = stiffness, damping
-    mass = np.asarray(system.sleeper_mass)
-    spectrum = np.fft.rfft(tangent, axis=-1)[..., : 2 * m + 1] / (system.samples * mass)
-    # two-sided harmonics j = -2m..2m, stored at index j + 2m
-    full = np.concatenate([np.conj(spectrum[..., :0:-1]), spectrum], axis=-1)
-    stiff, damp = full[0], full[1]
+    mass = np.asarray(system.sleeper_mass)  # scalar, or (B, 1) for a batch
+    stiff, damp = (part / mass for part in tangent_harmonics(system, coefficients))
     omega_k = (np.asarray(system.fundamental) * np.arange(1, m + 1))[..., None, :]
     # dG_n/dc_k = K_{n-k} + i omega_k D_{n-k}; c_{-k} = conj(c_k) brings in K_{n+k} - i omega_k D_{n+k}.
     # Both are Toeplitz in (n, k): windows of the harmonics, taken as views, not gathered.
@@ -63,6 +54,29 @@ def residual_jacobian(system: HarmonicSystem, coefficients: np.ndarray) -> np.nd
     jacobian[..., m + 1 :, : m + 1] = by_real[..., 1:, :].imag
     jacobian[..., m + 1 :, m + 1 :] = by_imag[..., 1:, :].imag
     return jacobian
+
+
+def tangent_harmonics(system: HarmonicSystem,
+                      coefficients: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Harmonics K_l, C_l (l = -2m..2m) of df/dw [N/m] and df/dw' [N s/m] along w(t).
+
+    The foundation's tangent stiffness and damping along the periodic
+    response of coefficients c_0..c_m, by the AFT's N-point DFT (N > 4m),
+    stored at index l + 2m.  They make the linearised foundation force
+    ``sum_l (K_l + i omega C_l)`` of the Jacobian and of Hill's matrix
+    (`railtrack.equations.hill`).  Leading axes of `coefficients` are a batch.
+    """
+    m = system.harmonics
+    require_jacobian_samples(system.samples, m)
+    coefficients = np.asarray(coefficients)
+    w, v = synthesize(system, coefficients)
+    _checked_force(system, w, v)
+    stiffness, damping = system.foundation.tangent(w, v)
+    tangent = np.empty((2,) + coefficients.shape[:-1] + (system.samples,))
+    tangent[0], tangent[1] = stiffness, damping
+    spectrum = np.fft.rfft(tangent, axis=-1)[..., : 2 * m + 1] / system.samples
+    full = np.concatenate([np.conj(spectrum[..., :0:-1]), spectrum], axis=-1)
+    return full[0], full[1]
 
 
 def _lagged(harmonics: np.ndarray, m: int) -> tuple[np.ndarray, np.ndarray]:

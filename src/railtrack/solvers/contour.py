@@ -1,0 +1,128 @@
+"""Eigenvalues of an analytic matrix function inside a contour (Beyn's method).
+
+A nonlinear eigenvalue problem T(z) p = 0, with T analytic inside a closed
+contour Gamma (meromorphic will do: poles of T are no eigenvalues), has
+finitely many eigenvalues inside.  Beyn's integral method (Beyn 2012,
+Linear Algebra Appl. 436) finds them all at once from the moments
+
+    A_k = (1 / 2 pi i) \\oint_Gamma z^k T(z)^{-1} V dz,   k = 0, 1,
+
+of a random probe V with more columns than eigenvalues inside: A_0 has the
+rank r of the eigenvalues inside, and with A_0 = U S W^* (rank r),
+B = U^* A_1 W S^{-1} is an r x r matrix whose eigenvalues are the
+eigenvalues of T inside Gamma and U times its eigenvectors are T's.  The
+integrals are taken by the trapezoidal rule on an ellipse, which converges
+geometrically.  `polish` then refines each eigenpair by Newton's method on
+the bordered system, so that the quadrature's error does not stay in the
+result.  `railtrack.solvers.floquet` applies both to Hill's matrix.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+__all__ = ["contour_eigenpairs", "polish"]
+
+RANK_TOLERANCE = 1e-9
+"""Singular values of A_0 below this fraction of the largest are quadrature noise."""
+
+
+def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: complex,
+                       semi_axes: tuple[float, float], points: int = 32, columns: int = 12,
+                       seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """Eigenvalues z and eigenvectors p of T(z) p = 0 inside an ellipse.
+
+    Parameters
+    ----------
+    matrix : callable
+        ``matrix(z)`` for an array of points z returns T(z), shape
+        ``z.shape + (n, n)``.
+    center : complex
+        Centre of the ellipse.
+    semi_axes : (float, float)
+        Its semi-axes along the real and the imaginary axis.
+    points : int
+        Quadrature points on the ellipse.
+    columns : int
+        Columns of the random probe: at most this many eigenvalues are found
+        (the probe grows, up to n, if the rank fills it).
+    seed : int
+        Seed of the probe (the result does not depend on it beyond round-off).
+
+    Returns
+    -------
+    values : ndarray, shape (r,)
+    vectors : ndarray, shape (n, r)
+        Approximate eigenpairs, to be refined by `polish`; some may lie just
+        outside the ellipse.
+
+    Examples
+    --------
+    >>> t = lambda z: np.array([[1.0, 2.0], [0.0, 3.0]]) - z[..., None, None] * np.eye(2)
+    >>> values, _ = contour_eigenpairs(t, 2.0, (1.5, 0.5), points=32, columns=2)
+    >>> np.sort(values.real).round(10).tolist()
+    [1.0, 3.0]
+    """
+    angle = 2.0 * np.pi * np.arange(points) / points
+    z = center + semi_axes[0] * np.cos(angle) + 1j * semi_axes[1] * np.sin(angle)
+    weights = (-semi_axes[0] * np.sin(angle) + 1j * semi_axes[1] * np.cos(angle)) / (1j * points)
+    values = matrix(z)
+    n = values.shape[-1]
+    rng = np.random.default_rng(seed)
+    columns = min(columns, n)
+    while True:
+        probe = rng.standard_normal((n, columns)) + 1j * rng.standard_normal((n, columns))
+        solved = np.linalg.solve(values, np.broadcast_to(probe, (points, n, columns)))
+        first = np.einsum("k,kij->ij", weights, solved)
+        second = np.einsum("k,kij->ij", weights * z, solved)
+        u, sigma, wh = np.linalg.svd(first, full_matrices=False)
+        rank = int(np.sum(sigma > RANK_TOLERANCE * sigma[0])) if sigma[0] > 0 else 0
+        if rank < columns or columns == n:
+            break
+        columns = min(2 * columns, n)
+    if rank == 0:
+        return np.empty(0, complex), np.empty((n, 0), complex)
+    u, w = u[:, :rank], wh[:rank].conj().T
+    reduced = u.conj().T @ second @ w / sigma[:rank]
+    eigenvalues, eigenvectors = np.linalg.eig(reduced)
+    return eigenvalues, u @ eigenvectors
+
+
+def polish(matrix: Callable[[np.ndarray], np.ndarray], value: complex, vector: np.ndarray,
+           iterations: int = 6, tol: float = 1e-12, step: float = 1e-6
+           ) -> tuple[complex, np.ndarray, float]:
+    """Newton's method on T(z) p = 0, u^* p = 1, from an approximate eigenpair.
+
+    The derivative T'(z) p is a central difference of width `step` (T is
+    analytic, so its error is of order step^2).
+
+    Returns
+    -------
+    value : complex
+    vector : ndarray
+        Normalised to unit norm.
+    residual : float
+        ||T(z) p|| / ||T(z)||_F at the result: small for a true eigenpair.
+    """
+    vector = np.asarray(vector, dtype=complex) / np.linalg.norm(vector)
+    anchor = vector.copy()
+    n = vector.size
+    for _ in range(iterations):
+        at = matrix(np.array([value - step, value, value + step]))
+        derivative = (at[2] - at[0]) @ vector / (2.0 * step)
+        bordered = np.zeros((n + 1, n + 1), dtype=complex)
+        bordered[:n, :n], bordered[:n, n], bordered[n, :n] = at[1], derivative, anchor.conj()
+        right = -np.concatenate([at[1] @ vector, [anchor.conj() @ vector - 1.0]])
+        try:
+            correction = np.linalg.solve(bordered, right)
+        except np.linalg.LinAlgError:
+            break
+        vector, value = vector + correction[:n], value + correction[n]
+        if abs(correction[n]) <= tol * max(1.0, abs(value)):
+            break
+    final = matrix(np.array([value]))[0]
+    vector = vector / np.linalg.norm(vector)
+    residual = float(np.linalg.norm(final @ vector) / np.linalg.norm(final))
+    return complex(value), vector, residual

@@ -1,0 +1,234 @@
+"""Stability of a periodic solution from its Floquet multipliers (Hill's method).
+
+A disturbance of the periodic solution grows or dies by the factor
+mu = e^{lambda T} per period T = H/v, where lambda is a Floquet exponent:
+a zero of det H(lambda; theta), Hill's matrix of
+`railtrack.equations.hill`, for some Bloch phase theta per sleeper.  The
+solution is stable when every multiplier lies inside the unit circle.
+
+Which exponents to keep.  The shift lambda -> lambda + i Omega of an
+exponent (Omega = 2 pi v / H) is the same disturbance with its Bloch phase
+shifted by 2 pi L / H.  So the disturbances that repeat every wagon along
+the track (the only ones a ring one wagon long carries) are the exponents
+with |Im lambda| <= Omega / 2 of the N_s = H/L phases 2 pi j / N_s
+(`bloch_phases`), and each appears there once; the textbook rule "keep
+|Im lambda| <= Omega / 2" applied at theta = 0 alone would lose all but one
+N_s-th of them.  Longer disturbances are the phases theta + 2 pi j / N_s
+with 0 < theta <= pi / N_s (``theta="scan"``).
+
+For each phase the exponents in the box ``min_multiplier <= |mu| <=
+max_multiplier``, |Im lambda T| <= pi are found by Beyn's contour method and
+refined by Newton (`railtrack.solvers.contour`).  Truncation to m harmonics
+makes spurious exponents whose eigenvectors sit on the highest harmonics;
+each exponent reports the share of its eigenvector on the top fifth of the
+harmonics, and those above `TAIL_LIMIT` are "unresolved" and never decide
+the verdict.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..equations.aft_jacobian import tangent_harmonics
+from ..equations.harmonic_balance import harmonic_system
+from ..equations.hill import bloch_phases, hill_matrix, tangent_toeplitz
+from .contour import contour_eigenpairs, polish
+from .solution import Solution
+
+__all__ = ["Floquet", "floquet", "TAIL_LIMIT"]
+
+TAIL_LIMIT = 0.05
+"""Largest share of an eigenvector's norm on the top fifth of the harmonics for a resolved exponent."""
+RESIDUAL_LIMIT = 1e-6
+"""Largest relative residual ||H p|| / ||H|| of an exponent after Newton's refinement."""
+
+
+@dataclass(frozen=True, eq=False)
+class Floquet:
+    """The Floquet multipliers of a periodic solution (`floquet`).
+
+    Attributes
+    ----------
+    multipliers : ndarray of complex
+        mu = e^{lambda T}, by decreasing modulus.
+    exponents : ndarray of complex
+        lambda [1/s], |Im lambda| <= pi / T.
+    phases : ndarray of float
+        The Bloch phase per sleeper of each [rad], in [0, 2 pi).
+    tail : ndarray of float
+        Share of each eigenvector's norm on the top fifth of the harmonics [-].
+    resolved : ndarray of bool
+        ``tail <= TAIL_LIMIT``: the truncation resolves the exponent.
+    dominant : complex
+        The resolved multiplier of largest modulus (0 if none in the box).
+    stable : bool
+        |dominant| < 1.
+    kind : {"real +", "real -", "complex", "none"}
+        The dominant multiplier: real and positive (through +1: a fold, or a
+        branch point), real and negative (through -1: period doubling), or
+        one of a complex pair (Neimark–Sacker: a quasi-periodic response).
+    frequency : float
+        arg(dominant) / 2 pi, the disturbance's frequency in the frame of the
+        train as a fraction of v / H, in [0, 0.5] [-].
+    theta : float
+        Bloch phase per sleeper of the dominant multiplier [rad].
+    base_phases : ndarray of float
+        The phases theta asked for (each stands for its N_s shifts) [rad].
+    most_unstable : float
+        The base phase whose multipliers reach the largest modulus [rad].
+    period : float
+        T = H / v [s].
+    harmonics : int
+    message : str
+    """
+
+    multipliers: np.ndarray
+    exponents: np.ndarray
+    phases: np.ndarray
+    tail: np.ndarray
+    resolved: np.ndarray
+    dominant: complex
+    stable: bool
+    kind: str
+    frequency: float
+    theta: float
+    base_phases: np.ndarray
+    most_unstable: float
+    period: float
+    harmonics: int
+    message: str
+
+
+def _base_phases(theta, sleepers: int) -> np.ndarray:
+    if theta is None:
+        return np.zeros(1)
+    if isinstance(theta, str):
+        if theta != "scan":
+            raise ValueError(f"theta must be None, a phase [rad], an array of them or 'scan'; "
+                             f"got {theta!r}")
+        return np.linspace(0.0, np.pi / sleepers, 9)
+    values = np.atleast_1d(np.asarray(theta))
+    if values.dtype.kind not in "iuf" or values.ndim != 1 or values.size == 0 \
+            or not np.all(np.isfinite(values)):
+        raise ValueError(f"theta must be a finite phase [rad] or a 1-D array of them; got {theta!r}")
+    return values.astype(float)
+
+
+def _kind(multiplier: complex, tol: float = 1e-6) -> tuple[str, float]:
+    angle = abs(float(np.angle(multiplier)))
+    if multiplier == 0:
+        return "none", float("nan")
+    if angle < tol:
+        return "real +", 0.0
+    if angle > np.pi - tol:
+        return "real -", 0.5
+    return "complex", angle / (2.0 * np.pi)
+
+
+def floquet(solution: Solution, theta=None, *, min_multiplier: float = 1e-2,
+            max_multiplier: float = 1e6, points: int = 32) -> Floquet:
+    """The Floquet multipliers of a periodic solution and its stability, by Hill's method.
+
+    Parameters
+    ----------
+    solution : Solution
+        A converged solution; H / L must be an integer.
+    theta : None, float, array_like or "scan"
+        Bloch phase per sleeper of the disturbances [rad].  None: those that
+        repeat every wagon (phase 0 and its N_s shifts), which a ring one
+        wagon long carries.  A value or an array: each with its shifts
+        (a ring of n wagons carries 2 pi j / (n N_s), j = 0..n-1).  "scan":
+        nine phases over [0, pi / N_s], which with their shifts sample every
+        wavelength.
+    min_multiplier, max_multiplier : float
+        The multipliers looked for: min <= |mu| <= max [-].
+    points : int
+        Quadrature points of the contour per phase.
+
+    Returns
+    -------
+    Floquet
+
+    Raises
+    ------
+    ValueError
+        If the solution did not converge, or H / L is not an integer.
+
+    Examples
+    --------
+    >>> import railtrack as rt
+    >>> s = rt.solve(rt.Track.paper(), rt.Train.paper(), rt.CubicFoundation.paper())
+    >>> result = floquet(s)
+    >>> result.stable, bool(abs(result.dominant) < 0.1)
+    (True, True)
+    """
+    if not solution.converged:
+        raise ValueError("the Floquet multipliers of an unconverged solution mean nothing: "
+                         f"it did not converge ({solution.message})")
+    if not (0 < min_multiplier < 1 < max_multiplier < np.inf):
+        raise ValueError("need 0 < min_multiplier < 1 < max_multiplier < inf; got "
+                         f"{min_multiplier!r}, {max_multiplier!r}")
+    passage, m = solution.passage, solution.harmonics
+    sleepers = bloch_phases(passage).size
+    bases = _base_phases(theta, sleepers)
+    system = harmonic_system(passage, solution.foundation, m)
+    toeplitz = tangent_toeplitz(*tangent_harmonics(system, solution.coefficients[m:]))
+    period = float(passage.wagon_length / passage.speed)
+    low, high = np.log(min_multiplier), np.log(max_multiplier)
+    center, semi_axes = 0.5 * (low + high), (0.55 * (high - low) + 0.5, 1.5 * np.pi)
+    top = np.abs(np.arange(-m, m + 1)) > m - max(1, (2 * m + 1) // 10)
+    found: list[tuple[complex, float, float, float]] = []
+    for base in bases:
+        phases = bloch_phases(passage, base)
+        # Conjugation maps the exponents of phase theta onto those of -theta: where the
+        # family holds both, the phases above pi are the mirror images of those below.
+        mirrored = bool(np.all(np.min(np.abs(np.mod(-phases[:, None] - phases[None, :] + np.pi,
+                                                      2 * np.pi) - np.pi), axis=1) < 1e-9))
+        for phase in phases[phases <= np.pi + 1e-12] if mirrored else phases:
+            def matrix(z, phase=phase):
+                return hill_matrix(passage, toeplitz, np.asarray(z) / period, phase)
+            values, vectors = contour_eigenpairs(matrix, center, semi_axes, points)
+            for z, p in zip(values, vectors.T):
+                if not (abs(z.imag) <= np.pi + 0.5 and low - 0.5 <= z.real <= high + 0.5):
+                    continue
+                z, p, residual = polish(matrix, z, p)
+                inside = -np.pi < z.imag <= np.pi and low <= z.real <= high
+                if inside and residual < RESIDUAL_LIMIT:
+                    tail = float(np.sum(np.abs(p[top]) ** 2))
+                    found.append((z, phase, tail, base))
+                    if mirrored and 1e-12 < phase < np.pi - 1e-12:
+                        found.append((np.conj(z), 2 * np.pi - phase, tail, base))
+    found = _distinct(found)
+    z = np.array([f[0] for f in found], dtype=complex)
+    order = np.argsort(-z.real, kind="stable")
+    z = z[order]
+    phases = np.array([found[i][1] for i in order])
+    tail = np.array([found[i][2] for i in order])
+    resolved = tail <= TAIL_LIMIT
+    multipliers = np.exp(z)
+    dominant = complex(multipliers[resolved][0]) if resolved.any() else 0j
+    kind, frequency = _kind(dominant)
+    theta_dominant = float(phases[resolved][0]) if resolved.any() else float("nan")
+    bases_of = np.array([found[i][3] for i in order])
+    worst = float(bases_of[resolved][0]) if resolved.any() else float(bases[0])
+    stable = bool(abs(dominant) < 1.0)
+    message = (f"{'stable' if stable else 'unstable'}: largest multiplier |mu| = "
+               f"{abs(dominant):.4g} ({kind}"
+               + (f", frequency {frequency:.3g} v/H" if kind == "complex" else "")
+               + f") at Bloch phase {theta_dominant:.3g} rad per sleeper; {int(resolved.sum())} "
+               f"resolved multipliers with |mu| >= {min_multiplier:g} over {bases.size} x "
+               f"{sleepers} phases, m = {m}")
+    return Floquet(multipliers, z / period, phases, tail, resolved, dominant, stable, kind,
+                   frequency, theta_dominant, bases, worst, period, m, message)
+
+
+def _distinct(found: list) -> list:
+    """Drop repeats: one exponent found from two phases' contours (same z and phase)."""
+    kept: list = []
+    for item in found:
+        if not any(abs(item[0] - k[0]) < 1e-7 * max(1.0, abs(item[0]))
+                   and abs(item[1] - k[1]) < 1e-9 for k in kept):
+            kept.append(item)
+    return kept

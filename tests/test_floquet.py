@@ -1,0 +1,142 @@
+"""Floquet multipliers by Hill's method (railtrack.equations.hill, railtrack.solvers.floquet).
+
+Independent truths: the lattice sum of the free beam's Green function for
+the receptance at complex frequency; a finite difference of the residual
+of eq. (17) for Hill's matrix at lambda = 0; on a linear foundation, where
+Hill's matrix is diagonal, a scalar Newton iteration on each diagonal
+entry; and the time-domain ring's watched verdicts at 525 m/s on the fold
+track of chapter 10.
+"""
+
+import numpy as np
+import pytest
+
+import railtrack as rt
+from railtrack.equations.aft_jacobian import tangent_harmonics
+from railtrack.equations.harmonic_balance import harmonic_system, residual, two_sided
+from railtrack.equations.hill import (
+    bloch_phases,
+    complex_receptance,
+    condensed_stiffness,
+    hill_matrix,
+    tangent_toeplitz,
+)
+from railtrack.solvers.floquet import floquet
+
+FOLD_TRACK = rt.Track.paper(pad_damping=1e5)
+FOLD_LAW = rt.CubicFoundation(20e6, 2e13, 0.8, 5000)
+
+
+def lattice_receptance(passage, s, q, terms=20_000):
+    """sum_j 1 / (EI L (kappa_j^4 - k_b^4)), kappa_j = (q + 2 pi j) / L, k_b^4 = -rho S s^2 / EI."""
+    span, stiffness = passage.sleeper_spacing, passage.rail_bending_stiffness
+    a4 = -passage.rail_linear_mass / stiffness * np.asarray(s, complex) ** 2 * span**4
+    j = np.arange(-terms, terms + 1)
+    total = np.sum(1.0 / ((np.asarray(q)[..., None] + 2 * np.pi * j) ** 4 - a4[..., None]), axis=-1)
+    return (total + 2.0 / (3.0 * terms**3 * (2 * np.pi) ** 4)) * span**3 / stiffness
+
+
+def test_receptance_at_complex_frequency_is_the_lattice_sum():
+    passage = rt.Passage.paper()
+    s = np.array([3 + 200j, -50 + 10j, 1e-4 + 1e-5j, 0.01j, 2000j, -300 + 4000j, -80.0])
+    q = np.array([0.3, 1.0, 0.0, 0.2, 2.5, 0.0, 3.0])
+    np.testing.assert_allclose(complex_receptance(passage, s, q), lattice_receptance(passage, s, q),
+                               rtol=1e-9)
+
+
+def test_rigid_rail_limit_at_zero_frequency_and_phase():
+    # s -> 0 at q = 0: every sleeper pushes the rail alike, which moves as a mass rho S L
+    passage = rt.Passage.paper()
+    s = 1e-3 + 2e-3j
+    expected = 1.0 / (passage.rail_linear_mass * passage.sleeper_spacing * s**2)
+    assert abs(complex_receptance(passage, s, 0.0) / expected - 1) < 1e-6
+    assert abs(condensed_stiffness(passage, 0.0, 0.0)) < 1e-6  # the track moves as a body
+
+
+@pytest.fixture(scope="module")
+def fold_solution():
+    return rt.solve(FOLD_TRACK, rt.Train.paper(speed=525.0), FOLD_LAW, harmonics=25)
+
+
+def test_hill_matrix_at_zero_is_the_jacobian(fold_solution):
+    solution, m = fold_solution, fold_solution.harmonics
+    system = harmonic_system(solution.passage, solution.foundation, m)
+    toeplitz = tangent_toeplitz(*tangent_harmonics(system, solution.coefficients[m:]))
+    hill = hill_matrix(solution.passage, toeplitz, 0.0, 0.0)
+    rng = np.random.default_rng(1)
+    direction = rng.normal(size=m + 1) + 1j * rng.normal(size=m + 1)
+    direction[0] = direction[0].real
+    c, step = solution.coefficients[m:], 1e-9
+    change = (residual(system, c + step * direction) - residual(system, c - step * direction)) / (
+        2 * step)
+    product = (hill @ two_sided(direction))[m:]
+    scale = np.max(np.abs(product))
+    assert np.max(np.abs(product - solution.passage.sleeper_mass * change)) < 1e-8 * scale
+
+
+def _scalar_root(function, z, steps=50):
+    for _ in range(steps):
+        h = 1e-7 * max(1.0, abs(z))
+        step = function(z) * 2 * h / (function(z + h) - function(z - h))
+        z -= step
+        if abs(step) < 1e-13 * max(1.0, abs(z)):
+            return z
+    raise AssertionError("no convergence")
+
+
+def test_linear_foundation_exponents_are_the_free_waves():
+    # K and C are constants, so H is diagonal: each exponent solves
+    # D(lambda + i k Omega, q_k) + k2 + eta2 (lambda + i k Omega) = 0 for one k
+    law = rt.LinearFoundation(20e6, 20e3)
+    track = rt.Track.paper(pad_damping=30e3)
+    solution = rt.solve(track, rt.Train.paper(speed=300.0), law, harmonics=20)
+    result = floquet(solution)
+    passage = solution.passage
+    omega = passage.fundamental_frequency
+    assert result.stable and result.resolved.sum() >= 4
+    for exponent, phase in zip(result.exponents[:6], result.phases[:6]):
+        k = np.arange(-20, 21)
+        s = exponent + 1j * k * omega
+        q = k * omega * passage.sleeper_spacing / passage.speed - phase
+        row = int(np.argmin(np.abs(condensed_stiffness(passage, s, q) + law.stiffness
+                                   + law.damping * s)))
+
+        def diagonal(lam, row=row):
+            s = lam + 1j * k[row] * omega
+            return condensed_stiffness(passage, s, q[row]) + law.stiffness + law.damping * s
+        assert abs(_scalar_root(diagonal, exponent + 0.3) - exponent) < 1e-8 * abs(exponent)
+
+
+@pytest.fixture(scope="module")
+def five_solutions():
+    branch = rt.continuation(FOLD_TRACK, rt.Train.paper(speed=300.0), FOLD_LAW, parameter="speed",
+                             start=300.0, stop=560.0, harmonics=25)
+    return [rt.solve(FOLD_TRACK, rt.Train.paper(speed=525.0), FOLD_LAW, harmonics=25, initial=c)
+            for c in branch.solutions_at(525.0)]
+
+
+def test_verdicts_at_525_match_the_ring(five_solutions):
+    # chapter 10: the ring keeps the -2.54 and -1.51 mm solutions and leaves the
+    # other three; it leaves the -1.607 mm one growing 1.92-fold per period
+    dips = np.array([s.one_period()[1].min() * 1e3 for s in five_solutions])
+    assert len(dips) == 5
+    verdicts = {round(d, 2): floquet(s) for d, s in zip(dips, five_solutions)}
+    assert sorted(d for d, f in verdicts.items() if f.stable) == [-2.54, -1.51]
+    leaving = verdicts[-1.61]
+    assert leaving.kind == "complex" and abs(abs(leaving.dominant) - 1.92) < 0.1
+    # the two between the folds leave by a real multiplier above +1
+    assert {verdicts[-2.41].kind, verdicts[-1.87].kind} == {"real +"}
+
+
+def test_bloch_phases_refuse_a_fractional_number_of_sleepers():
+    passage = rt.Passage.paper().replace(wagon_length=18.0000001)
+    with pytest.raises(ValueError, match="H/L = 30.00000016"):
+        bloch_phases(passage)
+
+
+def test_unconverged_solution_is_refused(fold_solution):
+    bad = rt.solve(FOLD_TRACK, rt.Train.paper(speed=525.0), FOLD_LAW, harmonics=25,
+                   max_iterations=1)
+    assert not bad.converged
+    with pytest.raises(ValueError, match="unconverged"):
+        floquet(bad)
