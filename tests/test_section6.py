@@ -85,3 +85,34 @@ def test_deflection_bowl_refuses_a_window_of_millions_of_sleepers_at_once():
     # A long but reasonable window is still drawn (10 km: 16,667 sleepers).
     bowl = s.deflection_bowl(0.0, [-5e3, 0.0, 5e3])
     assert bowl.sleepers.size == 2 * int(np.floor(5e3 / span)) + 1
+
+
+# -- 4. a ring of 2000 elements per span warns of its run time ---------------------------------
+
+def test_a_ring_of_two_thousand_elements_per_span_warns_of_its_run_time():
+    from railtrack.timedomain.fem import sleepers_on_ring
+    from railtrack.model.passage import Passage
+    from railtrack.timedomain.runcost import LongRunWarning, check_run_cost
+
+    sleepers = sleepers_on_ring(Passage(TRACK, TRAIN))
+    # Measured on the 2-core machine: 19.9 s a period, 65 s for the 3 periods of
+    # the default run from the static start (294 s in the sweep).
+    with pytest.warns(LongRunWarning, match="per period"):
+        check_run_cost(sleepers, 2000, 2400, 40)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", LongRunWarning)
+        check_run_cost(sleepers, 8, 2400, 40)          # the default: ~0.2 s a period
+
+
+def test_the_run_time_estimate_is_near_a_timed_run():
+    import time
+
+    from railtrack.timedomain.runcost import estimate_run_cost
+    from railtrack.timedomain.simulation import simulate_time_domain
+
+    began = time.perf_counter()
+    simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 250, 2400, max_periods=1)
+    measured = time.perf_counter() - began        # 2.0 s here (setup included)
+    estimate = estimate_run_cost(30, 250, 2400).seconds_per_period
+    # The estimate errs on the long side; a busy machine slows the timed run.
+    assert 0.25 < estimate / measured < 3.0

@@ -29,19 +29,27 @@ __all__ = [
 MEMORY_LIMIT = 4e9
 """Largest estimated memory of a run accepted [bytes]."""
 
-LONG_RUN_SECONDS = 600.0
-"""Estimated run time above which `LongRunWarning` is issued [s]."""
+LONG_RUN_SECONDS = 60.0
+"""Estimated run time above which `LongRunWarning` is issued [s].
+
+A minute: the default ring takes well under a second a period, so a run
+estimated at a minute or more has sizes far beyond the defaults.  (It was
+ten minutes, and `elements_per_span=2000`, estimated at 7 min for five
+periods, ran 65 s to 294 s without a word.)
+"""
 
 TYPICAL_PERIODS = 5
 """Periods a run usually needs from the static start (3 to 5 on the paper's laws)."""
 
-# Measured on a 2-core machine (paper's track, linear and tensionless laws,
-# 1 to 256 elements per span, one period): ~1e-4 s of overhead per step,
-# Newton's few iterations included, plus ~1e-8 s per entry of the dense
-# n_dofs x H/L response; within a factor 2 of every measurement (twice the
-# linear law's time, 0.6 times the tensionless law's at 1 element per span).
+# Measured on a 2-core machine (paper's track, one period, OMP_NUM_THREADS=1):
+# linear law 0.17, 0.59, 1.97, 4.5, 9.9 and 19.9 s a period at 8, 64, 250,
+# 500, 1000 and 2000 elements per span, the tensionless law 0.24 s at 8:
+# ~1e-4 s of overhead per step, Newton's few iterations included, plus
+# 1.5e-9 to 2.3e-9 s per entry of the dense n_dofs x H/L response (the
+# sparse solve grows like it).  The constants below err on the long side:
+# 1.2 to 2.6 times the linear law's times.
 _SECONDS_PER_STEP = 1.5e-4
-_SECONDS_PER_RESPONSE_ENTRY = 1e-8
+_SECONDS_PER_RESPONSE_ENTRY = 2.5e-9
 # Per step: two records of the sleepers (in the 16 n_sleepers bytes), five
 # 8-byte arrays (times, rail twice, two periods of sleeper 0) and 8
 # wheel-load entries (int64 DOF and float64 value), twice for their
@@ -86,7 +94,7 @@ def estimate_run_cost(n_sleepers: int, elements_per_span: int, steps_per_period:
     --------
     >>> cost = estimate_run_cost(30, 8, 2400)
     >>> f"{cost.memory / 1e6:.1f} MB, {cost.seconds_per_period:.1f} s per period"
-    '3.1 MB, 0.7 s per period'
+    '3.1 MB, 0.5 s per period'
     """
     n_dofs = (2 * elements_per_span + 1) * n_sleepers
     response = float(n_dofs) * n_sleepers  # entries of A^-1 U, and of U itself

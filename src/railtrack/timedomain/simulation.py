@@ -169,7 +169,8 @@ def simulate_time_domain(
         If the estimated time-step error exceeds `warn_step_error`, with the
         estimate and the steps that would meet it.
     LongRunWarning
-        If the run is estimated to take more than 10 minutes, with the estimate.
+        If the run is estimated to take more than a minute
+        (`railtrack.timedomain.runcost.LONG_RUN_SECONDS`), with the estimate.
 
     Examples
     --------
