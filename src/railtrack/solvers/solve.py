@@ -31,7 +31,8 @@ from ..equations.harmonic_balance import (
 from ..equations.linear import analytic_coefficients
 from .newton import iterate_newton, linear_guess
 from .conditioning import check_conditioning
-from .solution import Solution, TruncationWarning
+from .solution import ConvergenceWarning, Solution, TruncationWarning
+from .speed_path import not_converged_advice, speed_path
 from ..model.passage import Passage
 from ..model.track import Track
 from ..model.train import Train
@@ -102,6 +103,7 @@ def solve(
     initial: np.ndarray | None = None,
     strict: bool = False,
     check_foundation: bool = True,
+    fallback: bool = True,
 ) -> Solution:
     """Periodic response of a sleeper on a (nonlinear) foundation, eqs. (12)–(23).
 
@@ -143,13 +145,20 @@ def solve(
         Starting c_0..c_m for the iterative methods (finite, c_0 real); needs
         an explicit m.
     strict : bool
-        Raise `ConvergenceError` instead of returning an unconverged solution.
+        Raise `ConvergenceError` instead of returning an unconverged solution
+        (which otherwise warns with a `ConvergenceWarning`).
     check_foundation : bool
         Refuse a law with negative stiffness or damping at rest
         (`railtrack.model.foundations.check_foundation_at_rest`).  A softening law
         whose stiffness at rest is positive passes; to solve a law that is
         deliberately unstable at rest, pass False, and check the answer with
         `railtrack.simulate_time_domain`.
+    fallback : bool
+        Where Newton fails from its linear guess (no `initial` given), follow
+        the branch of solutions in speed up from half the speed
+        (`railtrack.solvers.speed_path`) and land on this speed; the message
+        says so.  Where several solutions exist this finds one of them:
+        `railtrack.continuation` lists them all.  False: give up at once.
 
     Returns
     -------
@@ -225,10 +234,17 @@ def solve(
         system = spectrum.system(passage, foundation, m, samples)
         initial = None if initial is None else checked_initial(initial, m)
 
-    iterations = 0
+    iterations, path = 0, None
     for _round in range(AUTO_ROUNDS + 1):
         outcome, used_split, note = _run(method, system, tol, max_iterations, split, initial)
         iterations += outcome.iterations
+        if (fallback and method == "newton" and not outcome.converged and initial is None
+                and max_iterations is None and path is None):
+            path = speed_path(system, tol, 100)
+            if path.outcome is not None:
+                outcome = path.outcome._replace(message=f"{path.outcome.message}; "
+                                                f"{path.describe(float(passage.speed))}")
+                iterations += outcome.iterations
         estimate, tail = estimate_of(system, outcome.coefficients, spectrum)
         if not automatic or not outcome.converged or tail is None:
             break
@@ -248,6 +264,8 @@ def solve(
         system = spectrum.system(passage, foundation, grown, auto_samples(grown))
 
     message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
+    if path is not None and path.outcome is None:
+        message += f"; {path.describe(float(passage.speed))}"
     if automatic:
         message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
                     f"estimated truncation error {estimate:.1e})")
@@ -258,9 +276,10 @@ def solve(
             fix = f"the largest m that 'auto' takes is {MAX_AUTO_HARMONICS}"
         else:
             fix = f"'auto' stopped after {AUTO_ROUNDS + 1} solves"
+        advice = "pass a larger harmonics" if automatic else "pass a larger harmonics or use 'auto'"
         warnings.warn(TruncationWarning(
             f"harmonics={m}: the estimated truncation error is {estimate:.1%} of the peak "
-            f"sleeper displacement; {fix} (pass a larger harmonics or use 'auto')"
+            f"sleeper displacement; {fix} ({advice})"
         ), stacklevel=2)
     solution = Solution(
         passage=passage,
@@ -278,6 +297,10 @@ def solve(
     )
     if strict and not solution.converged:
         raise convergence_error(method, outcome, solution, message)
+    if not solution.converged:
+        warnings.warn(ConvergenceWarning(not_converged_advice(
+            method, message, passage, system.harmonics, stalled="line search" in outcome.message
+            or path is not None)), stacklevel=2)
     return solution
 
 

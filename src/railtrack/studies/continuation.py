@@ -6,34 +6,37 @@ single solves jumps between them (or misses some).  Pseudo-arclength
 continuation (Keller 1977) follows the curve R(x, p) = 0 itself, through
 its turning points, with x = to_real(c) (2m + 1 reals) and p the parameter.
 
-**Scaling.**  c is of order a millimetre and p may be 500 m/s, so the
-arclength is measured in ``u = (x / X, p / P)``, with X the Euclidean norm of
-x at the start and P = |stop - start|: a step ds = 0.02 moves p by at most
-2 % of the range, or the solution by 2 % of its size.  The residual is
-divided by ||F|| (`residual_norm`), which makes every block of the bordered
-Jacobian of order one.
+The steps themselves (scaling, bordered Jacobian, corrector) are in
+`railtrack.solvers.arclength`, which `railtrack.solve` shares for its fallback.
 
-**dR/dp** is a central difference with step h = 1e-6 max(|p|, P).  Its
-truncation error, of relative order h^2 / p^2 = 1e-12, and its round-off,
-about 1e-16 / 1e-6 = 1e-10 of the terms of R, only enter the Jacobian of
-the corrector: they make Newton's convergence linear with a ratio of order
-1e-8 instead of quadratic, and do not move the converged point, which is
-set by R alone.
+**Harmonics.**  By default (``harmonics="auto"``) m is chosen as
+`railtrack.solve` chooses it: predicted at both ends of the range to half the
+accuracy asked for, then, once the branch is traced, the truncation error of
+every point is estimated (`railtrack.solvers.truncation`); if the worst is
+above the accuracy, m grows to what that point's spectrum needs and the
+branch is traced again.  An explicit m is kept, and warns
+(`railtrack.TruncationWarning`) where a point's estimate exceeds 1 %.
 """
 
 from __future__ import annotations
 
+import dataclasses
+import math
+import warnings
+
 import numpy as np
 
 from ..solvers.arguments import require_count, require_fraction
+from ..solvers.arclength import ArclengthProblem, correct as _correct, tangent_of as _tangent
 from .branch import (TRACK_FIELDS, TRAIN_FIELDS, Branch, Fold, check_parameter,
                      hermite_turning_value, replaced, scalar)
-from ..equations.aft_jacobian import residual_jacobian
-from ..equations.harmonic_balance import (NonFiniteForceError, from_real, harmonic_system,
-                                          residual, residual_norm, to_real)
+from ..equations.harmonic_balance import from_real, harmonic_system, to_real
 from ..solvers.newton import iterate_newton
 from ..model.passage import Passage
-from ..solvers.solve import solve
+from ..solvers.solution import ConvergenceWarning, TruncationWarning
+from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION, solve
+from ..solvers.truncation import (MAX_AUTO_HARMONICS, TAIL_FACTOR, estimate_of,
+                                  grown_harmonics, predict_harmonics, track_spectrum)
 
 __all__ = ["continuation", "Branch", "Fold"]
 
@@ -43,72 +46,17 @@ MIN_COSINE = 0.9
 """A step whose new tangent turns by more than ~25 degrees is refused: it may have jumped branch."""
 
 
-class _Problem:
-    """R(u) and its Jacobian in the scaled unknowns u = (x / X, p / P)."""
+class _Problem(ArclengthProblem):
+    """R(u) and its Jacobian in the scaled unknowns u = (x / X, p / P) of one parameter."""
 
     def __init__(self, track, train, foundation, parameter, harmonics, samples, scales):
         self.parts = (track, train, foundation, parameter)
         self.harmonics, self.samples = harmonics, samples
-        self.x_scale, self.p_scale = scales
+        super().__init__(self._system, scales)
 
-    def system(self, p: float):
+    def _system(self, p: float):
         track, train, foundation = replaced(*self.parts[:3], self.parts[3], p)
         return harmonic_system(Passage(track, train), foundation, self.harmonics, self.samples)
-
-    def split(self, u):
-        return from_real(u[:-1] * self.x_scale), u[-1] * self.p_scale
-
-    def residual(self, u):
-        """(scaled R, relative residual) at u."""
-        c, p = self.split(u)
-        system = self.system(p)
-        r = residual(system, c)
-        return to_real(r) / system.load_norm(), residual_norm(system, r)
-
-    def jacobian(self, u):
-        """[dR/dx X, dR/dp P] / ||F||, shape (2m+1, 2m+2)."""
-        c, p = self.split(u)
-        system = self.system(p)
-        h = 1e-6 * max(abs(p), self.p_scale)
-        try:
-            ahead, behind = (to_real(residual(self.system(p + s), c)) for s in (h, -h))
-            slope = (ahead - behind) / (2 * h)
-        except ValueError:
-            # p - h outside the field's range (epsilon = 0): the one-sided
-            # difference of the same order, from p, p + h and p + 2h
-            r0, r1, r2 = (to_real(residual(self.system(p + k * h), c)) for k in range(3))
-            slope = (4 * r1 - 3 * r0 - r2) / (2 * h)
-        columns = np.column_stack([residual_jacobian(system, c) * self.x_scale, slope * self.p_scale])
-        return columns / system.load_norm()
-
-
-def _tangent(jacobian, previous=None):
-    """Unit null vector of the (2m+1) x (2m+2) `jacobian`, turned to agree with `previous`."""
-    if previous is None:
-        t = np.linalg.svd(jacobian)[2][-1]
-    else:
-        t = np.linalg.solve(np.vstack([jacobian, previous]), np.eye(len(previous))[-1])
-        t /= np.linalg.norm(t)
-        t = t if t @ previous > 0 else -t
-    return t
-
-
-def _correct(problem, guess, tangent, tol, max_steps):
-    """Newton on R(u) = 0, tangent . (u - guess) = 0; (u, relative residual, steps) or None."""
-    u = guess.copy()
-    for steps in range(max_steps + 1):
-        try:
-            r, norm = problem.residual(u)
-            if norm <= tol:
-                return u, norm, steps
-            if steps == max_steps or not np.isfinite(norm):
-                return None
-            bordered = np.vstack([problem.jacobian(u), tangent])
-            u = u + np.linalg.solve(bordered, -np.append(r, tangent @ (u - guess)))
-        except (NonFiniteForceError, ValueError, np.linalg.LinAlgError):
-            # a trial p outside the field's range (speed <= 0), or a law overflowing
-            return None
-    return None
 
 
 def _fold(problem, u, tangent, ds, slope, tol, max_steps):
@@ -139,10 +87,10 @@ def _fold(problem, u, tangent, ds, slope, tol, max_steps):
 
 
 def continuation(track, train, foundation, parameter: str = "speed", start=None, stop=None,
-                 harmonics: int = 15, step: float | None = None, max_points: int = 400,
-                 tol: float = 1e-10, *, min_step: float | None = None,
-                 max_step: float | None = None, samples: int | None = None,
-                 initial=None, max_corrector: int = 8) -> Branch:
+                 harmonics: int | str = "auto", step: float | None = None, max_points: int = 400,
+                 tol: float = 1e-10, *, accuracy: float | None = None,
+                 min_step: float | None = None, max_step: float | None = None,
+                 samples: int | None = None, initial=None, max_corrector: int = 8) -> Branch:
     """Follow the periodic solution of eq. (17) from ``parameter = start`` to `stop`.
 
     Parameters
@@ -158,8 +106,13 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
         First value (default: the value in the given objects).
     stop : float
         The branch ends when it reaches this value, landing exactly on it.
-    harmonics : int
-        m (default 15).  Check `branch.solution(i).truncation_error`.
+    harmonics : int or "auto"
+        m, the same at every point.  "auto" (default): the smallest m that
+        keeps the estimated truncation error of every point below
+        `accuracy` (module docstring); the branch's message gives m and the
+        worst estimate.  An explicit m whose worst point exceeds 1 % warns
+        (`railtrack.TruncationWarning`).  Each point's estimate is
+        ``branch.solution(i).truncation_error``.
     step : float, optional
         First arclength step, in the unit of the parameter: on a flat stretch
         the change of p per step (default (stop - start) / 50).
@@ -167,13 +120,16 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
         Largest number of points, the start included.
     tol : float
         Every point solves eq. (17) to ||R|| / ||F|| <= tol.
+    accuracy : float, optional
+        For ``harmonics="auto"``: the largest estimated truncation error of a
+        point, as for `railtrack.solve` (default 1e-3).
     min_step, max_step : float, optional
         Bounds of the step, same unit as `step` (default step / 1000 and
         (stop - start) / 10).  A corrector failing at `min_step` ends the branch.
     samples : int, optional
-        AFT samples per period, > 4m.
+        AFT samples per period, > 4m; needs an explicit m.
     initial : ndarray, optional
-        Starting c_0..c_m for the first solve.
+        Starting c_0..c_m for the first solve; needs an explicit m.
     max_corrector : int
         Newton steps allowed to each corrector.
 
@@ -181,6 +137,8 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
     -------
     Branch
         With the points, their coefficients (one-sided), the folds and a message.
+        A branch that ends before `stop` warns (`railtrack.ConvergenceWarning`)
+        with the reason.
 
     Raises
     ------
@@ -205,7 +163,14 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
     start, stop = scalar("start", parameter, start), scalar("stop", parameter, stop)
     if start == stop:
         raise ValueError(f"start and stop of {parameter!r} must differ; both are {start!r}")
-    require_count("harmonics", harmonics, 1)
+    automatic = isinstance(harmonics, str) and harmonics == "auto"
+    if not automatic:
+        require_count("harmonics", harmonics, 1)
+    elif samples is not None or initial is not None:
+        raise ValueError("samples and initial need an explicit harmonics=m; 'auto' chooses m itself")
+    if accuracy is not None and not automatic:
+        warnings.warn("accuracy is used by harmonics='auto' only; ignored for an explicit m")
+    accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy", accuracy)
     require_count("max_points", max_points, 2)
     tol = require_fraction("tol", tol)
     span = abs(stop - start)
@@ -215,8 +180,76 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
         raise ValueError(f"need 0 < min_step <= step <= max_step and step <= |stop - start| for "
                          f"{parameter!r}; got {bounds[0]!r}, {step!r}, {bounds[1]!r}")
 
-    first = solve(*replaced(track, train, foundation, parameter, start), harmonics,
-                  method="newton", tol=tol, samples=samples, initial=initial)
+    settings = (track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
+                max_corrector)
+    if not automatic:
+        branch, worst = _trace(*settings, harmonics, samples, initial)
+        if worst[0] > WARN_TRUNCATION:
+            warnings.warn(TruncationWarning(
+                f"harmonics={harmonics}: the estimated truncation error reaches {worst[0]:.1%} "
+                f"of the peak sleeper displacement at {parameter} = {worst[1]:.6g}; "
+                f"harmonics='auto' would take m = {worst[2]} there (pass a larger harmonics "
+                "or use 'auto')"), stacklevel=2)
+        return _warned(branch)
+    m = max(_predicted(track, train, foundation, parameter, p, accuracy) for p in (start, stop))
+    for _round in range(AUTO_ROUNDS + 1):
+        branch, worst = _trace(*settings, m, None, None)
+        if worst[0] <= accuracy or m >= MAX_AUTO_HARMONICS or not branch.converged.all():
+            break
+        m = min(MAX_AUTO_HARMONICS, max(math.ceil(1.1 * m), worst[2]))
+    note = (f"; harmonics='auto' chose m = {branch.harmonics}, largest estimated truncation "
+            f"error {worst[0]:.1e} at {parameter} = {worst[1]:.6g}")
+    if worst[0] > accuracy:
+        warnings.warn(TruncationWarning(
+            f"harmonics='auto' stopped at m = {branch.harmonics} with an estimated truncation "
+            f"error of {worst[0]:.1%} at {parameter} = {worst[1]:.6g} (pass a larger harmonics)"),
+            stacklevel=2)
+    return _warned(dataclasses.replace(branch, message=branch.message + note))
+
+
+def _predicted(track, train, foundation, parameter, value, accuracy) -> int:
+    """The m that `railtrack.solve` predicts at ``parameter = value`` (1 if it cannot)."""
+    try:
+        track, train, foundation = replaced(track, train, foundation, parameter, value)
+        return predict_harmonics(Passage(track, train), foundation, accuracy / 2)[0]
+    except (ValueError, ArithmeticError):
+        return 1
+
+
+def _warned(branch: Branch) -> Branch:
+    """`branch`, with a `ConvergenceWarning` to the caller if it ended before its stop."""
+    if not branch.message.startswith("reached"):
+        warnings.warn(ConvergenceWarning(
+            f"the branch in {branch.parameter} ended early, after {len(branch)} point(s): "
+            f"{branch.message}"), stacklevel=3)
+    return branch
+
+
+def _estimates(problem, points) -> tuple[float, float, int]:
+    """(worst estimated truncation error, its parameter value, the m it needs) over the points."""
+    worst = (0.0, float(points[0][3]), problem.harmonics)
+    for u, _residual, _steps, value in points:
+        system = problem.system(value)
+        c = problem.split(u)[0]
+        estimate, tail = estimate_of(system, c, track_spectrum(system.passage,
+                                                               TAIL_FACTOR * problem.harmonics))
+        if tail is not None and estimate > worst[0]:
+            worst = (estimate, float(value), grown_harmonics(c, tail, 0.8 * DEFAULT_ACCURACY))
+    return worst
+
+
+def _trace(track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
+           max_corrector, harmonics, samples, initial):
+    """The branch at m = `harmonics`, and `_estimates` of its points."""
+    span = abs(stop - start)
+    with warnings.catch_warnings():
+        # the branch warns for itself (`_warned`, and the caller's truncation check)
+        warnings.simplefilter("ignore", ConvergenceWarning)
+        warnings.simplefilter("ignore", TruncationWarning)
+
+
+        first = solve(*replaced(track, train, foundation, parameter, start), harmonics,
+                      method="newton", tol=tol, samples=samples, initial=initial)
     c = first.coefficients[harmonics:]
     x_scale = float(np.linalg.norm(to_real(c))) or 1.0
     problem = _Problem(track, train, foundation, parameter, harmonics, first.samples,
@@ -226,7 +259,8 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
     folds, message = [], ""
     if not first.converged:
         message = f"the first solve, at {parameter} = {start!r}, did not converge: {first.message}"
-        return _branch(problem, points, [np.full(len(u), np.nan)], folds, message, tol)
+        return (_branch(problem, points, [np.full(len(u), np.nan)], folds, message, tol),
+                (float("nan"), start, harmonics))
     direction = np.sign(stop - start)
     tangent = _tangent(problem.jacobian(u))
     tangent *= np.sign(tangent[-1]) * direction or 1.0
@@ -236,6 +270,16 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
         point = _correct(problem, u + ds * tangent, tangent, tol, max_corrector)
         new_tangent = None if point is None else _tangent(problem.jacobian(point[0]), tangent)
         if point is None or new_tangent @ tangent < MIN_COSINE:
+            predicted = u + ds * tangent
+            if point is None and (predicted[-1] * span - stop) * direction >= 0:
+                # no solution past stop, e.g. stop at the edge of the field's valid
+                # range (epsilon = 0): land on stop from the predictor instead
+                landed = _land(problem, u, predicted, stop, tol)
+                if landed is not None:
+                    points.append(landed)
+                    tangents.append(_tangent(problem.jacobian(landed[0]), tangent))
+                    message = f"reached {parameter} = {stop!r}"
+                    break
             if ds <= low * (1 + 1e-12):
                 message = (f"the corrector failed, or turned the tangent too far, at the "
                            f"smallest step {bounds[0]:.3g} at {parameter} = {u[-1] * span:.6g}")
@@ -268,7 +312,7 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
     else:
         message = f"stopped after max_points = {max_points} points at {parameter} = {u[-1] * span:.6g}"
     message += f"; {len(folds)} fold(s)"
-    return _branch(problem, points, tangents, folds, message, tol)
+    return _branch(problem, points, tangents, folds, message, tol), _estimates(problem, points)
 
 
 def _land(problem, before, after, value, tol):
