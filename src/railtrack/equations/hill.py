@@ -197,19 +197,20 @@ def hill_matrix(passage: Passage, toeplitz: np.ndarray, exponent: ArrayLike,
         K_{k-j} and C_{k-j} (`tangent_toeplitz`).
     exponent : array_like
         lambda [1/s], complex; leading axes give a stack of matrices.
-    theta : float
-        Bloch phase per sleeper [rad].
+    theta : float or array_like
+        Bloch phase per sleeper [rad]; an array broadcasts with `exponent`.
 
     Returns
     -------
-    ndarray, shape exponent.shape + (2m+1, 2m+1)
+    ndarray, shape broadcast(exponent, theta).shape + (2m+1, 2m+1)
         Rows and columns k, j = -m..m.
     """
     m = (toeplitz.shape[-1] - 1) // 2
     k = np.arange(-m, m + 1)
     omega = passage.fundamental_frequency
     s = np.asarray(exponent, dtype=complex)[..., None] + 1j * omega * k
-    q = k * omega * passage.sleeper_spacing / passage.speed - theta
+    q = k * omega * passage.sleeper_spacing / passage.speed - np.asarray(theta)[..., None]
+    s = np.broadcast_to(s, np.broadcast_shapes(s.shape, q.shape))
     matrix = toeplitz[0] + s[..., None, :] * toeplitz[1]
     diagonal = np.arange(2 * m + 1)
     matrix[..., diagonal, diagonal] += condensed_stiffness(passage, s, q)

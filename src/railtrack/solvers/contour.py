@@ -30,15 +30,16 @@ RANK_TOLERANCE = 1e-9
 
 
 def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: complex,
-                       semi_axes: tuple[float, float], points: int = 32, columns: int = 12,
-                       seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+                       semi_axes: tuple[float, float], points: int = 24, columns: int = 12,
+                       seed: int = 0) -> list[tuple[np.ndarray, np.ndarray]]:
     """Eigenvalues z and eigenvectors p of T(z) p = 0 inside an ellipse.
 
     Parameters
     ----------
     matrix : callable
-        ``matrix(z)`` for an array of points z returns T(z), shape
-        ``z.shape + (n, n)``.
+        ``matrix(z)`` for the array of quadrature points z returns T(z) of
+        shape ``batch + z.shape + (n, n)``: leading axes are separate
+        problems, solved together.
     center : complex
         Centre of the ellipse.
     semi_axes : (float, float)
@@ -53,15 +54,15 @@ def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: compl
 
     Returns
     -------
-    values : ndarray, shape (r,)
-    vectors : ndarray, shape (n, r)
-        Approximate eigenpairs, to be refined by `polish`; some may lie just
-        outside the ellipse.
+    list of (values, vectors)
+        For each problem of the batch (in C order), approximate eigenvalues,
+        shape (r,), and eigenvectors, shape (n, r), to be refined by
+        `polish`; some may lie just outside the ellipse.
 
     Examples
     --------
     >>> t = lambda z: np.array([[1.0, 2.0], [0.0, 3.0]]) - z[..., None, None] * np.eye(2)
-    >>> values, _ = contour_eigenpairs(t, 2.0, (1.5, 0.5), points=32, columns=2)
+    >>> [(values, _)] = contour_eigenpairs(t, 2.0, (1.5, 0.5), points=32, columns=2)
     >>> np.sort(values.real).round(10).tolist()
     [1.0, 3.0]
     """
@@ -70,24 +71,30 @@ def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: compl
     weights = (-semi_axes[0] * np.sin(angle) + 1j * semi_axes[1] * np.cos(angle)) / (1j * points)
     values = matrix(z)
     n = values.shape[-1]
+    values = values.reshape((-1, points, n, n))
     rng = np.random.default_rng(seed)
     columns = min(columns, n)
     while True:
         probe = rng.standard_normal((n, columns)) + 1j * rng.standard_normal((n, columns))
-        solved = np.linalg.solve(values, np.broadcast_to(probe, (points, n, columns)))
-        first = np.einsum("k,kij->ij", weights, solved)
-        second = np.einsum("k,kij->ij", weights * z, solved)
+        solved = np.linalg.solve(values, np.broadcast_to(probe, values.shape[:2] + (n, columns)))
+        first = np.einsum("k,bkij->bij", weights, solved)
+        second = np.einsum("k,bkij->bij", weights * z, solved)
         u, sigma, wh = np.linalg.svd(first, full_matrices=False)
-        rank = int(np.sum(sigma > RANK_TOLERANCE * sigma[0])) if sigma[0] > 0 else 0
-        if rank < columns or columns == n:
+        floor = RANK_TOLERANCE * sigma[:, :1]
+        ranks = np.sum((sigma > floor) & (sigma[:, :1] > 0), axis=1)
+        if np.all(ranks < columns) or columns == n:
             break
         columns = min(2 * columns, n)
-    if rank == 0:
-        return np.empty(0, complex), np.empty((n, 0), complex)
-    u, w = u[:, :rank], wh[:rank].conj().T
-    reduced = u.conj().T @ second @ w / sigma[:rank]
-    eigenvalues, eigenvectors = np.linalg.eig(reduced)
-    return eigenvalues, u @ eigenvectors
+    pairs = []
+    for b, rank in enumerate(ranks):
+        if rank == 0:
+            pairs.append((np.empty(0, complex), np.empty((n, 0), complex)))
+            continue
+        left, right = u[b, :, :rank], wh[b, :rank].conj().T
+        reduced = left.conj().T @ second[b] @ right / sigma[b, :rank]
+        eigenvalues, eigenvectors = np.linalg.eig(reduced)
+        pairs.append((eigenvalues, left @ eigenvectors))
+    return pairs
 
 
 def polish(matrix: Callable[[np.ndarray], np.ndarray], value: complex, vector: np.ndarray,

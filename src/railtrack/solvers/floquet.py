@@ -128,7 +128,7 @@ def _kind(multiplier: complex, tol: float = 1e-6) -> tuple[str, float]:
 
 
 def floquet(solution: Solution, theta=None, *, min_multiplier: float = 1e-2,
-            max_multiplier: float = 1e6, points: int = 32) -> Floquet:
+            max_multiplier: float = 1e6, points: int = 24) -> Floquet:
     """The Floquet multipliers of a periodic solution and its stability, by Hill's method.
 
     Parameters
@@ -186,14 +186,18 @@ def floquet(solution: Solution, theta=None, *, min_multiplier: float = 1e-2,
         # family holds both, the phases above pi are the mirror images of those below.
         mirrored = bool(np.all(np.min(np.abs(np.mod(-phases[:, None] - phases[None, :] + np.pi,
                                                       2 * np.pi) - np.pi), axis=1) < 1e-9))
-        for phase in phases[phases <= np.pi + 1e-12] if mirrored else phases:
-            def matrix(z, phase=phase):
+        solved = phases[phases <= np.pi + 1e-12] if mirrored else phases
+
+        def matrix(z, phase=solved[:, None]):
+            return hill_matrix(passage, toeplitz, np.asarray(z) / period, phase)
+        pairs = contour_eigenpairs(matrix, center, semi_axes, points)
+        for phase, (values, vectors) in zip(solved, pairs):
+            def single(z, phase=phase):
                 return hill_matrix(passage, toeplitz, np.asarray(z) / period, phase)
-            values, vectors = contour_eigenpairs(matrix, center, semi_axes, points)
             for z, p in zip(values, vectors.T):
                 if not (abs(z.imag) <= np.pi + 0.5 and low - 0.5 <= z.real <= high + 0.5):
                     continue
-                z, p, residual = polish(matrix, z, p)
+                z, p, residual = polish(single, z, p)
                 inside = -np.pi < z.imag <= np.pi and low <= z.real <= high
                 if inside and residual < RESIDUAL_LIMIT:
                     tail = float(np.sum(np.abs(p[top]) ** 2))
