@@ -25,6 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..model.passage import Passage
+from .rail_field import check_positions
 
 __all__ = ["kink_coefficients", "kink_sum"]
 
@@ -43,6 +44,7 @@ def kink_coefficients(passage: Passage, omega: ArrayLike, x: ArrayLike) -> np.nd
     ``sum_j -J_j e^{-i omega_n t_j} / (T omega_n^2)``, zero at omega = 0.
     """
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
+    check_positions(passage, omega, x)
     jumps, times = _kinks(passage, np.atleast_1d(x))
     with np.errstate(divide="ignore"):
         shape = np.where(omega == 0.0, 0.0, -1.0 / (float(passage.period) * omega**2))
@@ -65,6 +67,8 @@ def kink_sum(passage: Passage, t: ArrayLike, x: ArrayLike) -> np.ndarray:
     True
     """
     t, x = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(x, dtype=float))
+    # The kinks' phase 2 pi (x / v) / T, as the first harmonic's: refused where it is round-off.
+    check_positions(passage, [2.0 * np.pi / float(passage.period)], x)
     jumps, times = _kinks(passage, x)
     period = float(passage.period)
     tau = np.mod(t[..., None] - times, period)
