@@ -154,3 +154,36 @@ def test_positions_where_roundoff_leaves_no_digit_are_refused(output):
         getattr(s, output)(t, _far(s, 1e15 / float(s.train.wagon_length)))
     with pytest.raises(ValueError, match="round-off"):
         getattr(s, output)(t, -_far(s, 1e15 / float(s.train.wagon_length)))
+
+
+# -- 7. messages that name the real cause -------------------------------------------------------
+
+def test_overflowing_receptance_is_not_blamed_on_a_missing_pad_damping():
+    from railtrack.equations.sleeper import rail_coupling
+    from railtrack.model.passage import Passage
+
+    # EI = 1e-300 N m^2 at 1e5 m/s: k_b L = (rho S omega^2 / EI)^(1/4) L reaches 1.4e78,
+    # whose fourth power overflows; the pad's damping is the paper's 1e6 N s/m.
+    track = Track.paper(rail_bending_stiffness=1e-300)
+    assert track.pad_damping == 1e6
+    passage = Passage(track, Train.paper(speed=1e5))
+    with pytest.raises(ValueError) as info:
+        rail_coupling(passage, passage.harmonic_frequencies(20))
+    message = str(info.value)
+    assert "pad_damping > 0" not in message
+    assert "overflow" in message and "rail_bending_stiffness" in message
+    with pytest.raises(ValueError, match="overflow"):
+        solve(track, Train.paper(speed=1e5), LinearFoundation.paper(), harmonics=20)
+
+
+def test_a_wagon_length_off_a_whole_number_of_spans_shows_the_digits_that_say_so():
+    from railtrack.model.passage import Passage
+    from railtrack.timedomain.fem import sleepers_on_ring
+
+    passage = Passage(TRACK, Train(18.0000001, (0.0, 3.0), (100e3, 100e3), 45.0))
+    with pytest.raises(ValueError) as info:
+        sleepers_on_ring(passage)
+    message = str(info.value)
+    ratio = 18.0000001 / 0.6
+    assert f"H/L = {ratio!r}" in message and "H = 18.0000001 m" in message
+    assert "H/L = 30 " not in message and "H = 18 m" not in message

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .receptance import receptance_factors
+from .receptance import bending_wavenumber, receptance_factors
 from ..model.passage import Passage
 
 __all__ = [
@@ -43,11 +43,35 @@ def _pad_rail_denominator(passage: Passage, omega: np.ndarray):
     stiffness = pad_stiffness(passage, omega)
     combined = factors.denominator + stiffness * factors.numerator
     if not np.all(np.isfinite(combined)) or np.any(combined == 0):
-        raise ValueError(
-            "1 + A(omega) eta_E(omega) vanishes: the undamped track is exactly at "
-            "resonance at one of these frequencies; give pad_damping > 0"
-        )
+        raise ValueError(_why_no_denominator(passage, omega, combined))
     return factors, stiffness, combined
+
+
+def _why_no_denominator(passage: Passage, omega: np.ndarray, combined: np.ndarray) -> str:
+    """The cause of a non-finite or zero 1 + A eta_E, in words, with the numbers."""
+    omega = np.broadcast_to(omega, combined.shape)
+    overflow = ~np.isfinite(combined)
+    where = float(np.abs(omega[overflow if overflow.any() else combined == 0]).max())
+    if overflow.any():
+        reach = float(bending_wavenumber(passage, where)) * float(passage.sleeper_spacing)
+        return (
+            f"eq. (3) overflows at |omega| = {where:.4g} rad/s: k_b L = (rho S omega^2 / EI)^(1/4) "
+            f"L = {reach:.3g}, whose powers exceed double precision (rail_bending_stiffness "
+            f"EI = {float(passage.rail_bending_stiffness):.3g} N m^2, rail_linear_mass "
+            f"rho S = {float(passage.rail_linear_mass):.3g} kg/m, sleeper_spacing "
+            f"L = {float(passage.sleeper_spacing):.3g} m): check these inputs and their units"
+        )
+    if float(passage.pad_damping) == 0.0:
+        return (
+            f"1 + A(omega) eta_E(omega) vanishes at |omega| = {where:.4g} rad/s: the undamped "
+            "track is exactly at resonance at this frequency; give pad_damping > 0"
+        )
+    return (
+        f"1 + A(omega) eta_E(omega) vanishes at |omega| = {where:.4g} rad/s although "
+        f"pad_damping = {float(passage.pad_damping):.3g} N s/m: the numerator and the "
+        "denominator of eq. (3) are both zero there, exactly; change the speed or the "
+        "track slightly"
+    )
 
 
 def load_transfer(passage: Passage, omega: ArrayLike) -> np.ndarray:

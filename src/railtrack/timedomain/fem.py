@@ -61,8 +61,8 @@ def sleepers_on_ring(passage: Passage) -> int:
     if count < 1 or abs(ratio - count) > RING_TOLERANCE:
         raise ValueError(
             "the time-domain ring model needs H/L (wagon_length / sleeper_spacing) "
-            f"to be an integer; got H/L = {ratio:.6g} (H = {float(passage.wagon_length):g} m, "
-            f"L = {float(passage.sleeper_spacing):g} m)"
+            f"to be an integer; got H/L = {ratio!r} (H = {float(passage.wagon_length)!r} m, "
+            f"L = {float(passage.sleeper_spacing)!r} m), {abs(ratio - count):.2g} from {count}"
         )
     return count
 
