@@ -61,10 +61,19 @@ def sleepers_on_ring(passage: Passage) -> int:
     if count < 1 or abs(ratio - count) > RING_TOLERANCE:
         raise ValueError(
             "the time-domain ring model needs H/L (wagon_length / sleeper_spacing) "
-            f"to be an integer; got H/L = {ratio!r} (H = {float(passage.wagon_length)!r} m, "
-            f"L = {float(passage.sleeper_spacing)!r} m), {abs(ratio - count):.2g} from {count}"
+            f"to be an integer; got H/L = {_not_integer(ratio)} "
+            f"(H = {float(passage.wagon_length)!r} m, L = {float(passage.sleeper_spacing)!r} m)"
         )
     return count
+
+
+def _not_integer(ratio: float) -> str:
+    """`ratio` with the fewest digits (6 at least) that show it is not an integer."""
+    for digits in range(6, 18):
+        text = f"{ratio:.{digits}g}"
+        if float(text) != round(ratio):
+            return text
+    return repr(ratio)
 
 
 def hermite_shape_functions(xi: ArrayLike, length: float) -> np.ndarray:
