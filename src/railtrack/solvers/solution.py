@@ -14,6 +14,7 @@ from ..model.passage import Passage
 from ..equations.bowl import DeflectionBowl, deflection_bowl
 from ..equations.load import load_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
+from .output_errors import output_truncation_errors
 
 __all__ = ["Solution", "ConvergenceError", "ConvergenceWarning", "TruncationWarning", "DeflectionBowl",
            "fourier_series"]
@@ -94,6 +95,8 @@ class Solution:
         Estimated error of the sleeper displacement from keeping m harmonics:
         max over the period of the neglected part over the peak |w| [-]
         (`railtrack.solvers.truncation.truncation_error`); NaN if the solve diverged.
+        The rail-seat load and the moment have their own, larger errors:
+        `truncation_errors`.
     """
 
     passage: Passage
@@ -193,10 +196,14 @@ class Solution:
         since w is positive upward.  `t` and `x` as in `rail_displacement`.
         Under a wheel the moment has a kink in time; by default the kinks are
         summed in closed form (`railtrack.equations.moment`), so that the series
-        converges as fast as the displacement's.  At ``harmonics="auto"`` the
-        moment of the paper's wagon and of a four-axle coach is within 0.3 %
-        of its peak of an 800-harmonic sum, and its peak within 0.3 % of the
-        time-domain ring's (tests/test_forces.py).  ``kinks="series"`` gives
+        converges without the 1/m error of a kink.  Its neglected harmonics
+        still fall more slowly than the displacement's: at
+        ``harmonics="auto"`` the moment of the paper's wagon and of a
+        four-axle coach is within 0.3 % of its peak of an 800-harmonic sum,
+        and its peak within 0.3 % of the time-domain ring's
+        (tests/test_forces.py), but at 250 m/s 0.7 % off where the
+        displacement is within 5e-4; `truncation_errors` estimates it for
+        any case (tests/test_output_accuracy.py).  ``kinks="series"`` gives
         the plain truncated Fourier series instead, for comparison: it
         converges like 1/m at the kinks.
         """
@@ -206,6 +213,32 @@ class Solution:
         if kinks == "series":
             return ei * self._rail_field(t, x, 2)
         raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
+
+    def truncation_errors(self, x: float = 0.0) -> dict[str, float]:
+        """Estimated truncation error of each output from keeping m harmonics [-].
+
+        `truncation_error` is the sleeper displacement's; the rail-seat load
+        and the bending moment converge more slowly in m, and
+        ``harmonics="auto"`` aims at the displacement only (on the paper's
+        track at 250 m/s: w within 5e-4 of its peak, the load 1 %, the
+        moment 0.7 %).  Ask for a larger m if an output you use is off by
+        more than you accept.
+
+        Parameters
+        ----------
+        x : float
+            Position of the rail ahead of the sleeper for its displacement and
+            moment [m].
+
+        Returns
+        -------
+        dict
+            ``"sleeper_displacement"``, ``"rail_displacement"``,
+            ``"rail_seat_load"`` and ``"rail_bending_moment"``, each the
+            largest neglected share over the period relative to that
+            output's peak (`railtrack.solvers.output_errors`).
+        """
+        return output_truncation_errors(self, x)
 
     def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
         """Pad force on the sleeper, positive in compression [N], eq. (5).
