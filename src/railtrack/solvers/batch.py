@@ -20,10 +20,13 @@ import numpy as np
 
 from .foundation_at_rest import static_deflection
 from .newton import guess_about_mean
+from .truncation import TAIL_FACTOR, track_spectrum
 from ..equations.aft_jacobian import residual_jacobian
-from ..equations.harmonic_balance import HarmonicSystem, from_real, residual, residual_norm, to_real
+from ..equations.harmonic_balance import (HarmonicSystem, from_real, residual, residual_norm,
+                                          synthesize, to_real)
 
-__all__ = ["BatchOutcome", "member", "static_means", "batch_guess", "newton_batch"]
+__all__ = ["BatchOutcome", "member", "static_means", "batch_guess", "newton_batch",
+           "batch_truncation"]
 
 
 class BatchOutcome(NamedTuple):
@@ -196,3 +199,50 @@ def _rows(system: HarmonicSystem, index: np.ndarray) -> HarmonicSystem:
                                omega=take(system.omega), coupling=take(system.coupling),
                                load=take(system.load), operator=take(system.operator))
 
+
+
+def _periodic_series(coefficients: np.ndarray, first: int, samples: int) -> np.ndarray:
+    """sum over n >= first of c_n e^{i omega_n t} + conj at `samples` times, row by row."""
+    spectrum = np.zeros(coefficients.shape[:-1] + (samples // 2 + 1,), dtype=complex)
+    count = min(coefficients.shape[-1], samples // 2 + 1 - first)
+    spectrum[..., first : first + count] = coefficients[..., :count] * samples
+    return np.fft.irfft(spectrum, samples, axis=-1)
+
+
+def batch_truncation(system: HarmonicSystem, coefficients: np.ndarray,
+                     size: int) -> tuple[np.ndarray, np.ndarray]:
+    """`railtrack.solvers.truncation.truncation_error` of every member, and the tails.
+
+    The same estimate as for a single solve (the neglected harmonics
+    m+1..8m linearised about each member's solution, their largest value
+    over the period relative to the peak of the completed response), with
+    every step elementwise over the batch.
+
+    Returns
+    -------
+    errors : ndarray, shape (B,)
+        NaN where a member's coefficients or law are not finite.
+    tails : ndarray, shape (B, 7m)
+        Estimated c_{m+1}..c_{8m} of each member [m].
+    """
+    m, samples = system.harmonics, system.samples
+    upto = TAIL_FACTOR * m
+    spectrum = track_spectrum(system.passage, upto)
+    c = np.asarray(coefficients, dtype=complex)
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+        w, v = synthesize(system, c)
+        force = np.broadcast_to(np.asarray(system.foundation.force(w, v), dtype=float), w.shape)
+        stiffness, damping = (np.mean(np.broadcast_to(x, w.shape), axis=-1, keepdims=True)
+                              for x in system.foundation.tangent(w, v))
+        excess = np.zeros((size, upto + 1), dtype=complex)
+        generated = np.fft.rfft(force, axis=-1) / (samples * np.asarray(system.sleeper_mass))
+        top = min(generated.shape[-1], upto + 1)
+        excess[:, m + 1 : top] = generated[:, m + 1 : top]
+        law = (stiffness + 1j * spectrum.omega * damping) / np.asarray(system.sleeper_mass)
+        tails = (-(spectrum.load + excess) / (spectrum.operator + law))[:, m + 1 :]
+        grid = 1 << int(np.ceil(np.log2(4 * (upto + 1))))
+        neglected = _periodic_series(tails, m + 1, grid)
+        whole = _periodic_series(c, 0, grid) + neglected
+        errors = np.max(np.abs(neglected), axis=-1) / np.max(np.abs(whole), axis=-1)
+    finite = np.all(np.isfinite(c), axis=-1) & np.isfinite(errors)
+    return np.where(finite, errors, np.nan), tails
