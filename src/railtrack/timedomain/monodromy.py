@@ -36,11 +36,13 @@ exp(-i theta) and G reduces to a matrix of one wagon's size:
 mu = exp(-i theta) nu^N_s.
 
 Which multipliers matter: the rail modes whose deflection vanishes at every
-sleeper (pinned-pinned modes) never move a sleeper and are undamped, so they
-sit on the unit circle, and the rail modes too fast for the time step are
-barely damped (|mu| ~ 0.9999).  Neither is what `check_stability` watches;
-`RingMultipliers.sleeper_share` measures how much an eigenvector moves the
-sleepers and `RingMultipliers.dominant` keeps those above `SLEEPER_SHARE`.
+sleeper (pinned-pinned modes) never move a sleeper and are undamped (|mu| = 1),
+and the rail modes too fast for the time step are barely damped (|mu| ~
+0.9999); `RingMultipliers.dominant` leaves out both by `sleeper_share`.
+The map is linearised about the harmonic-balance orbit, not about the ring's
+own periodic orbit, which is O(dt^2) away: on the fold track of chapter 10 at
+525 m/s the two differ by 5e-3 of the peak at 600 steps per period, and the
+map matches central differences of the nonlinear ring to 6e-3 (4e-4 at 2400).
 """
 
 from __future__ import annotations
@@ -60,7 +62,11 @@ from ..model.train import Train
 __all__ = ["SLEEPER_SHARE", "RingSpanMap", "RingMultipliers", "ring_span_map", "ring_multipliers"]
 
 SLEEPER_SHARE = 1e-3
-"""Least `RingMultipliers.sleeper_share` of a multiplier that counts as moving the sleepers [-]."""
+"""Least `RingMultipliers.sleeper_share` of a multiplier that counts as moving the sleepers [-].
+
+On the fold track of chapter 10 the shares of modes with |mu| > 0.5 fall in
+two groups: 0.18-0.20 (sleeper modes) and below 1e-7 (rail modes).
+"""
 
 
 @dataclass(frozen=True, eq=False)
