@@ -98,17 +98,26 @@ def test_continuation_reaches_the_edge_of_the_valid_range():
 
 
 def test_an_unconverged_solve_warns_and_strict_raises():
-    args = (rt.Track.paper(), rt.Train.paper(), rt.CubicFoundation.paper(), 15)
+    args = (TRACK, rt.Train.paper(speed=600.0), LAW, 25)
     with pytest.warns(rt.ConvergenceWarning, match="did not converge"):
-        assert not rt.solve(*args, max_iterations=1).converged
+        assert not rt.solve(*args, fallback=False).converged
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         with pytest.raises(rt.ConvergenceError):
-            rt.solve(*args, max_iterations=1, strict=True)
+            rt.solve(*args, fallback=False, strict=True)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         warnings.simplefilter("ignore", rt.ConvergenceWarning)
-        rt.solve(*args, max_iterations=1)          # silenced by the user: no error
+        rt.solve(*args, fallback=False)            # silenced by the user: no error
+
+
+def test_an_explicit_budget_of_steps_that_runs_out_is_quiet():
+    """The paper's k fixed-point steps: the caller chose the budget; converged=False says it."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        k15 = rt.solve(rt.Track.paper(), rt.Train.paper(), rt.CubicFoundation.paper(), 15,
+                       method="fixed-point", max_iterations=15)
+    assert not k15.converged and k15.iterations == 15
 
 
 def test_where_newton_stalls_the_warning_names_continuation():

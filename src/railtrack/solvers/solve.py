@@ -145,8 +145,9 @@ def solve(
         Starting c_0..c_m for the iterative methods (finite, c_0 real); needs
         an explicit m.
     strict : bool
-        Raise `ConvergenceError` instead of returning an unconverged solution
-        (which otherwise warns with a `ConvergenceWarning`).
+        Raise `ConvergenceError` instead of returning an unconverged solution,
+        which otherwise warns with a `ConvergenceWarning` (except when it
+        used all of an explicit `max_iterations`: a budget the caller set).
     check_foundation : bool
         Refuse a law with negative stiffness or damping at rest
         (`railtrack.model.foundations.check_foundation_at_rest`).  A softening law
@@ -297,7 +298,10 @@ def solve(
     )
     if strict and not solution.converged:
         raise convergence_error(method, outcome, solution, message)
-    if not solution.converged:
+    budget_spent = max_iterations is not None and outcome.iterations >= max_iterations
+    if not solution.converged and not budget_spent:
+        # an explicit max_iterations that runs out is the caller's budget (the
+        # paper's k = 100 fixed-point steps): converged=False says so, quietly
         warnings.warn(ConvergenceWarning(not_converged_advice(
             method, message, passage, system.harmonics, stalled="line search" in outcome.message
             or path is not None)), stacklevel=2)
