@@ -39,7 +39,7 @@ from numpy.typing import ArrayLike
 from ..model.passage import Passage
 
 __all__ = ["complex_receptance", "condensed_stiffness", "tangent_toeplitz", "hill_matrix",
-           "bloch_phases"]
+           "hill_derivative", "bloch_phases"]
 
 # eta(s, q) = L^3 [f1(a) + cos(q) f2(a)] / (4 EI G(a, q)) with a = k_b L,
 # f1 = (sin a cosh a - sinh a cos a) / a^3 and f2 = (sinh a - sin a) / a^3:
@@ -211,7 +211,26 @@ def hill_matrix(passage: Passage, toeplitz: np.ndarray, exponent: ArrayLike,
     s = np.asarray(exponent, dtype=complex)[..., None] + 1j * omega * k
     q = k * omega * passage.sleeper_spacing / passage.speed - np.asarray(theta)[..., None]
     s = np.broadcast_to(s, np.broadcast_shapes(s.shape, q.shape))
-    matrix = toeplitz[0] + s[..., None, :] * toeplitz[1]
+    matrix = s[..., None, :] * toeplitz[1]
+    matrix += toeplitz[0]
     diagonal = np.arange(2 * m + 1)
     matrix[..., diagonal, diagonal] += condensed_stiffness(passage, s, q)
     return matrix
+
+
+def hill_derivative(passage: Passage, toeplitz: np.ndarray, exponent: ArrayLike,
+                    theta: ArrayLike, vector: np.ndarray, step: float = 1e-6) -> np.ndarray:
+    """dH/dlambda times vectors [N s/m]: C_{k-j} exactly, D'(s_k, q_k) by a central difference.
+
+    `exponent` and `theta` of shape (r,) and `vector` of shape (r, 2m+1)
+    give r products.  D is analytic in s, so the difference of width
+    `step` (relative to 1 + |s_k|) has an error of order step^2.
+    """
+    m = (toeplitz.shape[-1] - 1) // 2
+    k = np.arange(-m, m + 1)
+    omega = passage.fundamental_frequency
+    s = np.asarray(exponent, dtype=complex)[..., None] + 1j * omega * k
+    q = k * omega * passage.sleeper_spacing / passage.speed - np.asarray(theta)[..., None]
+    h = step * (1.0 + np.abs(s))
+    slope = (condensed_stiffness(passage, s + h, q) - condensed_stiffness(passage, s - h, q)) / (2 * h)
+    return slope * vector + vector @ toeplitz[1].T

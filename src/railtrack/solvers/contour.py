@@ -30,7 +30,7 @@ RANK_TOLERANCE = 1e-9
 
 
 def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: complex,
-                       semi_axes: tuple[float, float], points: int = 24, columns: int = 12,
+                       semi_axes: tuple[float, float], points: int = 16, columns: int = 8,
                        seed: int = 0) -> list[tuple[np.ndarray, np.ndarray]]:
     """Eigenvalues z and eigenvectors p of T(z) p = 0 inside an ellipse.
 
@@ -97,39 +97,71 @@ def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: compl
     return pairs
 
 
-def polish(matrix: Callable[[np.ndarray], np.ndarray], value: complex, vector: np.ndarray,
+def polish(matrix: Callable[[np.ndarray], np.ndarray], values: np.ndarray, vectors: np.ndarray,
+           derivative: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None,
            iterations: int = 6, tol: float = 1e-12, step: float = 1e-6
-           ) -> tuple[complex, np.ndarray, float]:
-    """Newton's method on T(z) p = 0, u^* p = 1, from an approximate eigenpair.
+           ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Newton's method on T(z) p = 0, u^* p = 1, from approximate eigenpairs, all at once.
 
-    The derivative T'(z) p is a central difference of width `step` (T is
-    analytic, so its error is of order step^2).
+    Parameters
+    ----------
+    matrix : callable
+        ``matrix(z, rows)`` returns T(z) for the candidates ``rows`` (an
+        index array) at the points z of the same length, shape
+        (len(rows), n, n): each candidate may stand for its own problem.
+    values : ndarray, shape (r,)
+    vectors : ndarray, shape (r, n)
+        The approximate eigenpairs.
+    derivative : callable, optional
+        ``derivative(z, p, rows)`` returns T'(z_i) p_i, shape (len(rows), n); by default a
+        central difference of `matrix` of width `step` (T is analytic, so its
+        error is of order step^2).
 
     Returns
     -------
-    value : complex
-    vector : ndarray
-        Normalised to unit norm.
-    residual : float
+    values : ndarray, shape (r,)
+    vectors : ndarray, shape (r, n)
+        Each normalised to unit norm.
+    residuals : ndarray, shape (r,)
         ||T(z) p|| / ||T(z)||_F at the result: small for a true eigenpair.
+
+    Examples
+    --------
+    >>> t = lambda z, rows: np.array([[1.0, 2.0], [0.0, 3.0]]) - z[..., None, None] * np.eye(2)
+    >>> z, p, residual = polish(t, np.array([0.9 + 0.1j]), np.array([[1.0, 0.1]]))
+    >>> bool(abs(z[0] - 1) < 1e-12 and residual[0] < 1e-12)
+    True
     """
-    vector = np.asarray(vector, dtype=complex) / np.linalg.norm(vector)
-    anchor = vector.copy()
-    n = vector.size
+    if derivative is None:
+        def derivative(z, p, rows):
+            ends = (matrix(z + step, rows), matrix(z - step, rows))
+            return np.einsum("rij,rj->ri", ends[0] - ends[1], p) / (2.0 * step)
+    values = np.array(values, dtype=complex)
+    vectors = np.array(vectors, dtype=complex)
+    vectors /= np.linalg.norm(vectors, axis=1, keepdims=True)
+    anchor = vectors.conj()
+    r, n = vectors.shape
+    active = np.ones(r, dtype=bool)
     for _ in range(iterations):
-        at = matrix(np.array([value - step, value, value + step]))
-        derivative = (at[2] - at[0]) @ vector / (2.0 * step)
-        bordered = np.zeros((n + 1, n + 1), dtype=complex)
-        bordered[:n, :n], bordered[:n, n], bordered[n, :n] = at[1], derivative, anchor.conj()
-        right = -np.concatenate([at[1] @ vector, [anchor.conj() @ vector - 1.0]])
+        if not active.any():
+            break
+        rows = np.flatnonzero(active)
+        z, p = values[rows], vectors[rows]
+        at = matrix(z, rows)
+        bordered = np.zeros((z.size, n + 1, n + 1), dtype=complex)
+        bordered[:, :n, :n], bordered[:, :n, n], bordered[:, n, :n] = at, derivative(z, p, rows), \
+            anchor[active]
+        right = -np.concatenate([np.einsum("rij,rj->ri", at, p),
+                                 np.sum(anchor[active] * p, axis=1, keepdims=True) - 1.0], axis=1)
         try:
-            correction = np.linalg.solve(bordered, right)
+            correction = np.linalg.solve(bordered, right[..., None])[..., 0]
         except np.linalg.LinAlgError:
             break
-        vector, value = vector + correction[:n], value + correction[n]
-        if abs(correction[n]) <= tol * max(1.0, abs(value)):
-            break
-    final = matrix(np.array([value]))[0]
-    vector = vector / np.linalg.norm(vector)
-    residual = float(np.linalg.norm(final @ vector) / np.linalg.norm(final))
-    return complex(value), vector, residual
+        vectors[active], values[active] = p + correction[:, :n], z + correction[:, n]
+        done = np.abs(correction[:, n]) <= tol * np.maximum(1.0, np.abs(values[active]))
+        active[np.flatnonzero(active)[done]] = False
+    final = matrix(values, np.arange(r))
+    vectors /= np.linalg.norm(vectors, axis=1, keepdims=True)
+    residuals = np.linalg.norm(np.einsum("rij,rj->ri", final, vectors), axis=1) / \
+        np.linalg.norm(final, axis=(1, 2))
+    return values, vectors, residuals

@@ -33,7 +33,7 @@ import numpy as np
 
 from ..equations.aft_jacobian import tangent_harmonics
 from ..equations.harmonic_balance import harmonic_system
-from ..equations.hill import bloch_phases, hill_matrix, tangent_toeplitz
+from ..equations.hill import bloch_phases, hill_derivative, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
 from .solution import Solution
 
@@ -128,7 +128,7 @@ def _kind(multiplier: complex, tol: float = 1e-6) -> tuple[str, float]:
 
 
 def floquet(solution: Solution, theta=None, *, min_multiplier: float = 1e-2,
-            max_multiplier: float = 1e6, points: int = 24) -> Floquet:
+            max_multiplier: float = 1e6, points: int = 16) -> Floquet:
     """The Floquet multipliers of a periodic solution and its stability, by Hill's method.
 
     Parameters
@@ -179,7 +179,7 @@ def floquet(solution: Solution, theta=None, *, min_multiplier: float = 1e-2,
     low, high = np.log(min_multiplier), np.log(max_multiplier)
     center, semi_axes = 0.5 * (low + high), (0.55 * (high - low) + 0.5, 1.5 * np.pi)
     top = np.abs(np.arange(-m, m + 1)) > m - max(1, (2 * m + 1) // 10)
-    found: list[tuple[complex, float, float, float]] = []
+    candidates, found = [], []
     for base in bases:
         phases = bloch_phases(passage, base)
         # Conjugation maps the exponents of phase theta onto those of -theta: where the
@@ -192,18 +192,26 @@ def floquet(solution: Solution, theta=None, *, min_multiplier: float = 1e-2,
             return hill_matrix(passage, toeplitz, np.asarray(z) / period, phase)
         pairs = contour_eigenpairs(matrix, center, semi_axes, points)
         for phase, (values, vectors) in zip(solved, pairs):
-            def single(z, phase=phase):
-                return hill_matrix(passage, toeplitz, np.asarray(z) / period, phase)
-            for z, p in zip(values, vectors.T):
-                if not (abs(z.imag) <= np.pi + 0.5 and low - 0.5 <= z.real <= high + 0.5):
-                    continue
-                z, p, residual = polish(single, z, p)
-                inside = -np.pi < z.imag <= np.pi and low <= z.real <= high
-                if inside and residual < RESIDUAL_LIMIT:
-                    tail = float(np.sum(np.abs(p[top]) ** 2))
-                    found.append((z, phase, tail, base))
-                    if mirrored and 1e-12 < phase < np.pi - 1e-12:
-                        found.append((np.conj(z), 2 * np.pi - phase, tail, base))
+            near = (np.abs(values.imag) <= np.pi + 0.5) & (values.real >= low - 0.5) \
+                & (values.real <= high + 0.5)
+            candidates += [(z, p, phase, base, mirrored) for z, p in zip(values[near],
+                                                                         vectors.T[near])]
+    if candidates:
+        z0, p0, phase, base, mirrored = (np.array(column) for column in zip(*candidates))
+
+        def matrix(z, rows):
+            return hill_matrix(passage, toeplitz, z / period, phase[rows])
+
+        def slope(z, p, rows):
+            return hill_derivative(passage, toeplitz, z / period, phase[rows], p) / period
+        values, vectors, residuals = polish(matrix, z0, p0, slope)
+        inside = (-np.pi < values.imag) & (values.imag <= np.pi) & (values.real >= low) \
+            & (values.real <= high) & (residuals < RESIDUAL_LIMIT)
+        tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
+        for i in np.flatnonzero(inside):
+            found.append((values[i], phase[i], tails[i], base[i]))
+            if mirrored[i] and 1e-12 < phase[i] < np.pi - 1e-12:
+                found.append((np.conj(values[i]), 2 * np.pi - phase[i], tails[i], base[i]))
     found = _distinct(found)
     z = np.array([f[0] for f in found], dtype=complex)
     order = np.argsort(-z.real, kind="stable")
