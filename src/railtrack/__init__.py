@@ -45,7 +45,8 @@ from .solvers.solution import ConvergenceError, ConvergenceWarning, Solution, Tr
 from .solvers.solve import METHODS, solve
 from .studies.sweep import Sweep, sweep
 from .studies.continuation import continuation
-from .studies.branch import Branch, Fold
+from .studies.branch import Branch, Fold, StabilityChange
+from .solvers.floquet import Floquet, floquet
 from .studies.stability import StabilityCheck, check_stability
 from .studies.branch_stability import check_branch
 from .studies.ramp import SpeedRamp, speed_ramp
@@ -88,6 +89,9 @@ __all__ = [
     "continuation",
     "Branch",
     "Fold",
+    "StabilityChange",
+    "floquet",
+    "Floquet",
     "check_stability",
     "StabilityCheck",
     "check_branch",

@@ -23,7 +23,7 @@ from ..model.track import Track
 from ..model.train import Train
 from ..solvers.truncation import truncation_error
 
-__all__ = ["Branch", "Fold", "TRACK_FIELDS", "TRAIN_FIELDS", "replaced", "check_parameter",
+__all__ = ["Branch", "Fold", "StabilityChange", "TRACK_FIELDS", "TRAIN_FIELDS", "replaced", "check_parameter",
            "scalar", "hermite_turning_value"]
 
 TRACK_FIELDS = ("rail_linear_mass", "rail_bending_stiffness", "sleeper_mass",
@@ -96,6 +96,39 @@ class Fold:
     index: int
 
 
+@dataclass(frozen=True)
+class StabilityChange:
+    """Where a branch gains or loses stability (`railtrack.check_branch`).
+
+    Attributes
+    ----------
+    value : float
+        The parameter where the dominant Floquet multiplier crosses the unit
+        circle: the fold's value at a fold; elsewhere located by solving
+        between the two points.
+    index : int
+        The change lies between points `index` and `index + 1`.
+    kind : {"fold", "real +", "real -", "complex"}
+        How stability changes: at a fold (a real multiplier through +1 at
+        the solution's own period), or away from folds through +1, through
+        -1 (period doubling), or by a complex pair (Neimark–Sacker).
+    frequency : float
+        arg(mu) / 2 pi of the crossing multiplier, as a fraction of v / H [-].
+    theta : float
+        Its Bloch phase per sleeper [rad]; 0 for disturbances that repeat
+        every wagon.
+    gains : bool
+        True where the branch becomes stable in the order of its points.
+    """
+
+    value: float
+    index: int
+    kind: str
+    frequency: float
+    theta: float
+    gains: bool
+
+
 @dataclass(frozen=True, eq=False)
 class Branch:
     """Solutions of eq. (17) along a curve in one scalar parameter.
@@ -124,10 +157,16 @@ class Branch:
         Why the continuation stopped, in words.
     stable : ndarray of bool or None
         Stability of each point; None until `railtrack.check_branch` fills it
-        from the time-domain ring's verdicts on a sample of the points.
+        (from every point's Floquet multipliers, or from the time-domain
+        ring's verdicts on a sample of the points).
     checks : dict or None
-        Point index -> `railtrack.StabilityCheck` of each point the ring was
-        run on (`railtrack.check_branch`); None until then.
+        Point index -> `railtrack.Floquet` (or `railtrack.StabilityCheck`)
+        of each point judged (`railtrack.check_branch`); None until then.
+    multipliers : ndarray of complex or None
+        The dominant Floquet multiplier at each point (`railtrack.check_branch`
+        with Hill's method); None until then.
+    changes : tuple of StabilityChange or None
+        Where stability changes along the branch, in the order met.
     track, train, foundation : the problem at the start
     harmonics : int
         m.
@@ -165,6 +204,8 @@ class Branch:
     parameter_scale: float
     stable: np.ndarray | None = None
     checks: dict | None = None
+    multipliers: np.ndarray | None = None
+    changes: tuple[StabilityChange, ...] | None = None
 
     def __len__(self) -> int:
         return len(self.values)

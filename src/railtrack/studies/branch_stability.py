@@ -1,29 +1,28 @@
-"""Stability along a branch: the ring's verdict on a sample of its points.
+"""Stability along a branch: Floquet multipliers at every point, or the ring on a sample.
 
-`check_stability` judges one periodic solution by starting the time-domain
-ring on it, at a cost of tens of periods of the ring.  A branch from
-`railtrack.continuation` has hundreds of points, so `check_branch` judges a
-sample and carries each verdict to its neighbours.
+`check_branch` judges every point of a branch from `railtrack.continuation`.
+By default (``method="floquet"``) each point gets its Floquet multipliers by
+Hill's method (`railtrack.floquet`), which costs about as much as a few
+solves; where the verdict changes between two neighbouring points, the
+change is located: at a fold (a real multiplier through +1) it is the
+fold's own value, elsewhere the parameter where the dominant multiplier
+crosses the unit circle is found by solving between the two points.  Each
+change is listed on the branch (`railtrack.studies.branch.StabilityChange`)
+with its kind: a fold, a real multiplier through +1 away from a fold,
+through -1 (period doubling), or a complex pair (Neimark–Sacker).
 
-Why the folds are where the sample is split: at a fold (a saddle-node of
-periodic solutions) one Floquet multiplier of the periodic solution passes
-through +1, so stability changes there as a rule, and two points on either
-side of a fold must not share a verdict.  Between two folds stability can
-still change, where a pair of multipliers leaves the unit circle (a
-Neimark-Sacker bifurcation, leading to a quasi-periodic response) or one
-passes -1 (period doubling, which a one-wagon ring cannot carry); the branch
-alone does not show those.  So every segment between folds is sampled at a
-few points (and at the branch's two ends, which are no folds), and wherever
-two neighbouring samples of one segment disagree, the point between them is
-checked too, until the change is located to one step of the branch.  A
-point takes the verdict of the nearest checked point of its segment;
-`checks` keeps what the ring did at each checked point.
-
-Near a loss of stability without a fold the deciding multiplier is close
-to the unit circle, the departure grows by little more than 1 per period,
-and a short watch calls a slowly unstable point stable.  ``confirm=n``
-watches the stable point next to each located change for n periods, and
-goes on searching if it turns out unstable.
+``method="time-domain"`` keeps the older check: the time-domain ring
+(`railtrack.check_stability`) on a sample of the points.  At a fold one
+multiplier passes +1, so stability changes there as a rule, and the
+sample is split at the folds: every segment between folds is checked at a
+few points (and at the branch's two ends), and wherever two neighbouring
+checks of one segment disagree the point between them is checked too,
+until the change is located to one step of the branch.  A point takes the
+verdict of the nearest checked point of its segment, so a stable stretch
+of a segment between two sampled points is missed.  Near a loss of
+stability without a fold the departure grows by little more than 1 per
+period, and ``confirm=n`` watches the stable point next to each located
+change for n periods.
 """
 
 from __future__ import annotations
@@ -32,10 +31,14 @@ import dataclasses
 
 import numpy as np
 
-from .branch import Branch
+from ..solvers.floquet import floquet
+from ..solvers.solve import solve
+from .branch import Branch, StabilityChange, replaced
 from .stability import check_stability
 
-__all__ = ["segments", "check_branch"]
+__all__ = ["segments", "check_branch", "METHODS"]
+
+METHODS = ("floquet", "time-domain")
 
 
 def segments(branch: Branch) -> list[range]:
@@ -63,16 +66,29 @@ def _sample(segment: range, per_segment: int) -> list[int]:
     return sorted(picks)
 
 
-def check_branch(branch: Branch, per_segment: int = 2, *, locate: bool = True,
-                 confirm: int | None = None, max_checks: int = 40, **options) -> Branch:
-    """The branch with `stable` filled from the ring's verdicts on a sample of its points.
+def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
+                 resolution: float | None = None, per_segment: int | None = None,
+                 locate: bool = True, confirm: int | None = None, max_checks: int | None = None,
+                 **options) -> Branch:
+    """The branch with the stability of every point, and where it changes.
 
     Parameters
     ----------
     branch : Branch
         From `railtrack.continuation`, with every point converged.
+    method : {"floquet", "time-domain"}
+        Floquet multipliers by Hill's method at every point (default), or
+        the time-domain ring on a sample of the points.
+    theta : None, float, array_like or "scan"
+        ``method="floquet"``: the Bloch phases of the disturbances
+        (`railtrack.floquet`); None, those that repeat every wagon.
+    resolution : float or None
+        ``method="floquet"``: a change between two points away from a fold
+        is located to this many units of the parameter; default 1e-4 of
+        the larger of the two values.
     per_segment : int
-        Points checked inside each segment between folds (>= 1); the first
+        ``method="time-domain"`` only, as `locate`, `confirm` and
+        `max_checks`.  Points checked inside each segment between folds (>= 1); the first
         and the last point of the branch are checked as well.
     locate : bool
         Where two neighbouring checked points of one segment disagree, bisect
@@ -83,38 +99,54 @@ def check_branch(branch: Branch, per_segment: int = 2, *, locate: bool = True,
         per period tends to 1, and a short watch calls a slowly unstable
         point stable; if the long watch disagrees, the search goes on.
     max_checks : int
-        Most `check_stability` runs in all; a ValueError if the sample needs
+        Most `check_stability` runs in all (default 40); a ValueError if the sample needs
         more (before any run, if the first sample does).
     **options
-        Passed to `railtrack.check_stability` (periods, tol, elements_per_span,
+        Passed to `railtrack.floquet` (min_multiplier, ...) or to
+        `railtrack.check_stability` (periods, tol, elements_per_span,
         steps_per_period, wagons, max_periods, ...).
 
     Returns
     -------
     Branch
         A copy with ``stable`` (bool, one per point) and ``checks`` (point
-        index -> `StabilityCheck`, the longer watch where there was one) set.
+        index -> `Floquet`, or -> `StabilityCheck` with the longer watch
+        where there was one) set; with Hill's method also ``multipliers``
+        (the dominant one per point) and ``changes``.
 
     Examples
     --------
     >>> import railtrack as rt
     >>> branch = rt.continuation(rt.Track.paper(), rt.Train.paper(), rt.LinearFoundation.paper(),
     ...                          "speed", start=40.0, stop=50.0, harmonics=30)
-    >>> marked = check_branch(branch, per_segment=1, periods=3, elements_per_span=2,
-    ...                       steps_per_period=600)
+    >>> bool(check_branch(branch).stable.all())
+    True
+    >>> marked = check_branch(branch, "time-domain", per_segment=1, periods=3,
+    ...                       elements_per_span=2, steps_per_period=600)
     >>> bool(marked.stable.all()), [check.verdict for check in marked.checks.values()]
     (True, ['stays', 'stays', 'stays'])
     """
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {METHODS}; got {method!r}")
+    if not np.all(branch.converged):
+        bad = np.flatnonzero(~np.asarray(branch.converged))
+        raise ValueError(f"every point must be converged to judge its stability; points {bad[:5]} "
+                         "are not")
+    if method == "floquet":
+        ring_only = {"per_segment": per_segment, "confirm": confirm, "max_checks": max_checks}
+        given = [name for name, value in ring_only.items() if value is not None]
+        if given or not locate:
+            raise ValueError(f"{', '.join(given) or 'locate'} apply to method='time-domain' "
+                             "only; Hill's method judges every point")
+        return _floquet_branch(branch, theta, resolution, **options)
+    per_segment = 2 if per_segment is None else per_segment
+    max_checks = 40 if max_checks is None else max_checks
     if isinstance(per_segment, bool) or not isinstance(per_segment, (int, np.integer)) \
             or per_segment < 1:
         raise ValueError(f"per_segment must be an integer >= 1; got {per_segment!r}")
     whole = not isinstance(confirm, bool) and isinstance(confirm, (int, np.integer))
     if confirm is not None and not (whole and confirm >= 2):
         raise ValueError(f"confirm must be None or an integer >= 2 (periods); got {confirm!r}")
-    if not np.all(branch.converged):
-        bad = np.flatnonzero(~np.asarray(branch.converged))
-        raise ValueError(f"every point must be converged to judge its stability; points {bad[:5]} "
-                         "are not")
     parts = segments(branch)
     needed = len(parts) * per_segment + 2
     if needed > max_checks:
@@ -152,3 +184,57 @@ def check_branch(branch: Branch, per_segment: int = 2, *, locate: bool = True,
         for i in segment:
             stable[i] = checks[int(known[np.argmin(np.abs(known - i))])].stable
     return dataclasses.replace(branch, stable=stable, checks=dict(sorted(checks.items())))
+
+
+def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) -> Branch:
+    """`check_branch` by Hill's method: every point, then each change located."""
+    checks = {i: floquet(branch.solution(i), theta, **options) for i in range(len(branch))}
+    stable = np.array([checks[i].stable for i in range(len(branch))])
+    dominant = np.array([checks[i].dominant for i in range(len(branch))])
+    folds = {fold.index: fold for fold in branch.folds}
+    changes = []
+    for i in np.flatnonzero(stable[:-1] != stable[1:]):
+        i = int(i)
+        unstable = checks[i] if not stable[i] else checks[i + 1]
+        if i in folds:
+            kind, value = "fold", folds[i].value
+            frequency, phase = 0.0, 0.0
+        else:
+            value, unstable = _locate(branch, i, checks[i], checks[i + 1], theta, resolution,
+                                      options)
+            kind, frequency, phase = unstable.kind, unstable.frequency, unstable.theta
+        changes.append(StabilityChange(float(value), i, kind, float(frequency), float(phase),
+                                       bool(stable[i + 1])))
+    return dataclasses.replace(branch, stable=stable, checks=checks, multipliers=dominant,
+                               changes=tuple(changes))
+
+
+def _locate(branch: Branch, i: int, left, right, theta, resolution, options):
+    """The parameter between points i and i + 1 where |dominant multiplier| = 1.
+
+    Regula falsi on log|mu| against the parameter, each trial point solved
+    from the coefficients interpolated between the two points.  Returns the
+    value and the `Floquet` of the nearest unstable trial.
+    """
+    values = np.asarray(branch.values, dtype=float)
+    (a, b), (fa, fb) = values[i:i + 2], (np.log(abs(left.dominant)), np.log(abs(right.dominant)))
+    ca, cb = branch.coefficients[i], branch.coefficients[i + 1]
+    unstable = left if fa > 0 else right
+    tol = 1e-4 * max(abs(a), abs(b)) if resolution is None else float(resolution)
+    while abs(b - a) > tol:
+        weight = float(np.clip(fa / (fa - fb), 0.1, 0.9))
+        value = a + weight * (b - a)
+        guess = (1 - weight) * ca + weight * cb
+        problem = replaced(branch.track, branch.train, branch.foundation, branch.parameter, value)
+        trial = solve(*problem, harmonics=branch.harmonics, initial=guess, method="newton")
+        if not trial.converged:
+            break
+        result = floquet(trial, theta, **options)
+        f = np.log(abs(result.dominant))
+        if (f > 0) == (fa > 0):
+            a, fa, ca = value, f, trial.coefficients[branch.harmonics:]
+        else:
+            b, fb, cb = value, f, trial.coefficients[branch.harmonics:]
+        if f > 0:
+            unstable = result
+    return a + fa / (fa - fb) * (b - a), unstable
