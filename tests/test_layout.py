@@ -29,6 +29,7 @@ PUBLIC = {
     "simulate_time_domain", "TimeDomainSolution", "TimeStepWarning", "LongRunWarning",
     "NonFiniteLawError", "estimate_step_error", "explore", "dissipation", "Dissipation",
     "load_work", "floquet", "Floquet", "StabilityChange",
+    "ring_multipliers", "RingMultipliers",
 }
 
 

@@ -53,6 +53,7 @@ from .studies.ramp import SpeedRamp, speed_ramp
 from .timedomain.newmark import NonFiniteLawError
 from .timedomain.runcost import LongRunWarning
 from .timedomain.simulation import TimeDomainSolution, simulate_time_domain
+from .timedomain.monodromy import RingMultipliers, ring_multipliers
 from .timedomain.timestep import TimeStepWarning, estimate_step_error
 from .equations.load import axle_factor, load_coefficients
 from .model.passage import Passage
@@ -112,6 +113,8 @@ __all__ = [
     "axle_factor",
     "simulate_time_domain",
     "TimeDomainSolution",
+    "ring_multipliers",
+    "RingMultipliers",
     "TimeStepWarning",
     "LongRunWarning",
     "NonFiniteLawError",
