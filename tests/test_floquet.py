@@ -140,3 +140,40 @@ def test_unconverged_solution_is_refused(fold_solution):
     assert not bad.converged
     with pytest.raises(ValueError, match="unconverged"):
         floquet(bad)
+
+
+def _richardson(coarse, fine):
+    """The ring's |mu| extrapolated from two step counts in the ratio 2 (Newmark: error ~ dt^2)."""
+    return (4 * abs(fine) - abs(coarse)) / 3
+
+
+@pytest.mark.slow
+def test_multipliers_match_the_monodromy_of_the_linearised_ring(five_solutions):
+    # The third, independent method: the ring's Newmark map linearised about the
+    # same orbit, over one period (rt.ring_multipliers).  Both linearise the m = 25
+    # orbit, Hill's matrix with 40 harmonics so that its own truncation is out
+    # of the comparison; the ring's time-step error is extrapolated away.
+    for solution in five_solutions:
+        hill = abs(rt.floquet(solution, harmonics=40).dominant)
+        ring = [rt.ring_multipliers(solution, steps_per_period=steps).dominant
+                for steps in (1200, 2400)]
+        assert abs(hill - _richardson(*ring)) < 1e-3
+
+
+@pytest.mark.slow
+def test_multipliers_of_disturbances_two_wagons_long_match_a_ring_of_two_wagons(five_solutions):
+    # A ring of two wagons also carries disturbances that alternate from wagon
+    # to wagon: Bloch phase pi per wagon, pi / 30 per sleeper.  Three of the
+    # five solutions have a real negative multiplier there, on the edge of the
+    # strip |Im lambda T| <= pi that Hill's exponents are kept in.
+    kinds = []
+    for solution in five_solutions:
+        hill = rt.floquet(solution, np.pi / 30, harmonics=40)
+        ring = []
+        for steps in (2400, 4800):  # over the ring's period, two wagon periods
+            r = rt.ring_multipliers(solution, wagons=2, steps_per_period=steps)
+            sector = (np.abs(r.bloch_phase - np.pi) < 1e-9) & (r.sleeper_share > 1e-3)
+            ring.append(r.multipliers[sector][0])
+        assert abs(abs(hill.dominant) - _richardson(*ring)) < 1e-3
+        kinds.append(hill.kind)
+    assert kinds.count("real -") == 3
