@@ -148,3 +148,21 @@ def test_bad_requests_are_refused(fold_branch):
     broken = dataclasses.replace(fold_branch, converged=np.r_[False, fold_branch.converged[1:]])
     with pytest.raises(ValueError, match="converged"):
         rt.check_branch(broken)
+
+
+@pytest.mark.slow
+def test_the_torus_on_the_last_part_is_located_to_half_a_metre_per_second(by_hill):
+    # Independent check by the linearised ring (rt.ring_multipliers): half a metre
+    # per second either side of the located Neimark-Sacker speed, its dominant
+    # multiplier is inside and outside the unit circle.
+    torus = [c for c in by_hill.changes if c.kind == "complex"][-1]
+    i = torus.index
+    for offset, inside in ((-0.5, True), (0.5, False)):
+        speed = torus.value + offset
+        weight = (speed - by_hill.values[i]) / (by_hill.values[i + 1] - by_hill.values[i])
+        guess = (1 - weight) * by_hill.coefficients[i] + weight * by_hill.coefficients[i + 1]
+        solution = rt.solve(FOLD_TRACK, rt.Train.paper(speed=speed), FOLD_LAW, harmonics=25,
+                            initial=guess)
+        ring = [abs(rt.ring_multipliers(solution, steps_per_period=steps).dominant)
+                for steps in (1200, 2400)]
+        assert ((4 * ring[1] - ring[0]) / 3 < 1) == inside
