@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+import railtrack as rt
 from railtrack import CubicFoundation, LinearFoundation, Passage, Track, Train, continuation, solve
 from railtrack.timedomain.fem import ring_mesh
 from railtrack.studies.ramp import speed_ramp
@@ -234,3 +235,18 @@ def test_below_the_last_fold_the_falling_ramp_finds_no_periodic_state():
                       max_periods=300, start=small)
     assert ramp.converged.tolist() == [True, True, False]
     assert ramp.periods[-1] == 300 and ramp.interharmonic_fraction[-1] > 0.5
+
+
+def test_a_solution_truncated_beyond_the_tolerance_is_refused_and_hill_still_judges_it():
+    # Issue 18: at m = 15 on the fold track near 450 m/s the truncation error is
+    # about 3e-2, the ring leaves the solution for the state it approximates,
+    # and the check called every point of the branch unstable (0 of 14); at
+    # m = 25 all 14 stay.  Hill's multipliers agree at both m.
+    track, law = rt.Track.paper(pad_damping=1e5), rt.CubicFoundation(20e6, 2e13, 0.8, 5000)
+    coarse = rt.solve(track, rt.Train.paper(speed=450.0), law, harmonics=15)
+    assert coarse.converged and coarse.truncation_error > 0.02
+    with pytest.raises(ValueError, match="truncation error"):
+        rt.check_stability(coarse, elements_per_span=4, steps_per_period=600)
+    fine = rt.solve(track, rt.Train.paper(speed=450.0), law, harmonics=25)
+    assert rt.floquet(coarse).stable and rt.floquet(fine).stable
+    assert abs(abs(rt.floquet(coarse).dominant) - abs(rt.floquet(fine).dominant)) < 5e-3

@@ -209,6 +209,15 @@ def check_stability(solution, periods: int = 20, tol: float = 1e-2, elements_per
             "check_stability needs a converged solution; this one is not converged "
             f"({getattr(solution, 'message', 'no message')}).  Solve again with more "
             "iterations, another method or a nearby start (rt.continuation)")
+    truncation = float(getattr(solution, "truncation_error", float("nan")))
+    if truncation > 0.5 * tol:
+        # The ring keeps every harmonic: it leaves a truncated solution for the
+        # periodic state nearby by about the truncation error, stable or not.
+        raise ValueError(
+            f"the solution's truncation error {truncation:.2g} exceeds half the check's "
+            f"tolerance, tol / 2 = {0.5 * tol:g}: the ring would leave it for the periodic state "
+            "it approximates.  Solve with more harmonics (harmonics='auto'), or judge it by "
+            "rt.floquet, which does not depend on the ring")
     train = tiled_train(solution.train, wagons)
     sleepers = round(float(train.wagon_length) / float(solution.track.sleeper_spacing))
     steps = 80 * sleepers if steps_per_period is None else steps_per_period
