@@ -20,7 +20,8 @@ exceeds 1 %.
 memory does not grow with the sweep; the results themselves (2m + 1 complex
 coefficients a member) are estimated before anything is allocated, and a
 sweep whose results would exceed `MAX_RESULT_BYTES` is refused with the
-largest size that fits.
+largest size that fits (`railtrack.studies.sweep_members`; the extremes are
+read by `railtrack.studies.period_extremes`).
 """
 
 from __future__ import annotations
@@ -33,57 +34,22 @@ from typing import Any
 
 import numpy as np
 
-from ..solvers.arguments import require_count, require_fraction
-from ..solvers.batch import batch_truncation, member, newton_batch
-from ..solvers.conditioning import ROUNDOFF_LIMIT, check_conditioning
-from ..model.foundations import CubicFoundation, LinearFoundation, as_foundation
 from ..equations.harmonic_balance import harmonic_system, require_jacobian_samples, two_sided
+from ..model.foundations import as_foundation
 from ..model.passage import Passage
-from ..equations.rail_field import seat_load_coefficients
-from ..solvers.solution import ConvergenceWarning, Solution, TruncationWarning
-from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION
-from ..solvers.truncation import (MAX_AUTO_HARMONICS, auto_samples, grown_harmonics,
-                                  predict_harmonics)
 from ..model.track import Track
 from ..model.train import Train
+from ..solvers.arguments import require_count, require_fraction
+from ..solvers.batch import batch_truncation, member, newton_batch
+from ..solvers.solution import ConvergenceWarning, Solution, TruncationWarning
+from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION
+from ..solvers.truncation import MAX_AUTO_HARMONICS, auto_samples, grown_harmonics
+from .period_extremes import period_extremes
+from .sweep_members import (BLOCK, MAX_RESULT_BYTES, check_members_conditioning,
+                            polynomial_samples, predicted_harmonics, require_fits, rows,
+                            split_fields)
 
 __all__ = ["Sweep", "sweep", "BLOCK", "MAX_RESULT_BYTES"]
-
-GRID = 256
-"""Fewest samples per period at which the extremes are read, each refined by a parabola;
-more for m > 31, so that the highest harmonic has at least 8 samples a period."""
-BLOCK = 8192
-"""Members solved together: bounds the working memory (the AFT grids and Jacobians)."""
-MAX_RESULT_BYTES = 2**30
-"""Largest memory the results of one sweep may take (1 GiB)."""
-
-
-def _grid(harmonics: int) -> int:
-    return max(GRID, 1 << int(np.ceil(np.log2(8 * (harmonics + 1)))))
-
-
-def _result_bytes(size: int, harmonics: int) -> int:
-    """Memory of a `Sweep`'s arrays: 2m + 1 complex coefficients and 10 reals a member [B]."""
-    return size * ((2 * harmonics + 1) * 16 + 10 * 8)
-
-
-def _polynomial_samples(law, harmonics: int) -> int | None:
-    """N for a law whose AFT is exact once N > 4m (linear, cubic): the smallest power of two."""
-    if isinstance(law, (LinearFoundation, CubicFoundation)):
-        return max(16, 1 << int(np.floor(np.log2(4 * harmonics)) + 1))
-    return None
-
-
-def _peak(values: np.ndarray, sign: float) -> np.ndarray:
-    """sign * the max over the last (periodic) axis of sign * values, refined by a parabola."""
-    scaled = sign * values
-    i = np.argmax(scaled, axis=-1)[..., None]
-    n = values.shape[-1]
-    left, middle, right = (np.take_along_axis(scaled, (i + k) % n, axis=-1)[..., 0] for k in (-1, 0, 1))
-    curvature = left - 2.0 * middle + right
-    with np.errstate(divide="ignore", invalid="ignore"):
-        offset = np.where(curvature < 0, 0.5 * (left - right) / curvature, 0.0)
-    return sign * (middle - 0.25 * (left - right) * offset)
 
 
 @dataclass(frozen=True, eq=False)
@@ -148,37 +114,6 @@ class Sweep:
                     f"{self.residual[index]:.2e} after {self.iterations[index]} Newton steps")
 
 
-def _split(track: Track, train: Train, foundation, values: dict) -> tuple[dict, dict, dict, int]:
-    """Sort the swept fields into track, train and law, as (B, 1) arrays; B."""
-    owners = {"track": {f.name for f in dataclasses.fields(track)},
-              "train": {f.name for f in dataclasses.fields(train)} - {"axle_positions", "axle_loads"},
-              "foundation": {f.name for f in dataclasses.fields(foundation)}}
-    if not values:
-        raise TypeError("sweep needs at least one field to sweep, e.g. speed=np.linspace(10, 100, 50)")
-    parts: dict[str, dict] = {"track": {}, "train": {}, "foundation": {}}
-    size = None
-    for name, value in values.items():
-        owner = next((o for o, names in owners.items() if name in names), None)
-        if owner is None:
-            known = sorted(set().union(*owners.values()))
-            raise TypeError(f"cannot sweep {name!r}: not a scalar field of the track, the train "
-                            f"or {type(foundation).__name__} ({', '.join(known)})")
-        raw = np.asarray(value)
-        if raw.dtype.kind not in "iuf":
-            raise ValueError(f"{name} must be real numbers; got {raw.dtype.name} values "
-                             f"({np.ravel(raw)[:3].tolist()}...)" if raw.size else
-                             f"{name} must be a 1-D array of values to sweep; got {value!r}")
-        array = np.array(raw, dtype=float)            # a copy: the caller's array may change
-        if array.ndim != 1 or array.size == 0:
-            raise ValueError(f"{name} must be a 1-D array of values to sweep; got shape {array.shape}")
-        if size is not None and array.size != size:
-            raise ValueError(f"the swept fields must have equal lengths; {name} has {array.size}, "
-                             f"the first had {size}")
-        size = array.size
-        parts[owner][name] = array[:, None]
-    return parts["track"], parts["train"], parts["foundation"], size
-
-
 def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto", *,
           accuracy: float | None = None, tol: float = 1e-10, max_iterations: int = 100,
           samples: int | None = None, **values) -> Sweep:
@@ -241,14 +176,14 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
     accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy", accuracy)
     max_iterations = require_count("max_iterations", max_iterations, 0)
     tol = require_fraction("tol", tol)
-    track_changes, train_changes, law_changes, size = _split(track, train, foundation, values)
+    track_changes, train_changes, law_changes, size = split_fields(track, train, foundation, values)
     passage = Passage(track.replace(**track_changes), train.replace(**train_changes))
     law = as_foundation(dataclasses.replace(foundation, **law_changes))
     if samples is not None:
         require_jacobian_samples(samples, harmonics)
-    _require_fits(size, 1 if automatic else harmonics)
-    _check_conditioning(passage, size, values)
-    m = harmonics if not automatic else _predicted(passage, law, size, accuracy)
+    require_fits(size, 1 if automatic else harmonics)
+    check_members_conditioning(passage, size, values)
+    m = harmonics if not automatic else predicted_harmonics(passage, law, size, accuracy)
     run = dict(passage=passage, law=law, size=size, tol=tol, max_iterations=max_iterations)
     result = _solve(m, samples, None, automatic, **run)
     for _round in range(AUTO_ROUNDS if automatic else 0):
@@ -260,46 +195,15 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
                                         member(law, worst), m)
         c = result.coefficients[worst, m:]
         tail = batch_truncation(member_system, c[None, :], 1)[1][0]
-        grown = min(MAX_AUTO_HARMONICS, max(math.ceil(1.1 * m), grown_harmonics(c, tail, 0.8 * accuracy)))
+        grown = min(MAX_AUTO_HARMONICS,
+                    max(math.ceil(1.1 * m), grown_harmonics(c, tail, 0.8 * accuracy)))
         start = np.zeros((size, grown + 1), dtype=complex)
         start[:, : m + 1] = result.coefficients[:, m:]
         m = grown
         result = _solve(m, None, start, automatic, **run)
     _warn(result, automatic, accuracy, tuple(values))
-    return dataclasses.replace(result, values={k: np.array(v, dtype=float) for k, v in values.items()})
-
-
-def _require_fits(size: int, m: int) -> None:
-    """Refuse, before allocating them, results larger than `MAX_RESULT_BYTES`."""
-    needed = _result_bytes(size, m)
-    if needed > MAX_RESULT_BYTES:
-        fits = MAX_RESULT_BYTES // _result_bytes(1, m)
-        raise ValueError(f"a sweep of {size} members at m = {m} harmonics would hold "
-                         f"{needed / 2**30:.2f} GiB of results (limit {MAX_RESULT_BYTES / 2**30:g} "
-                         f"GiB); sweep the values in parts of at most {fits} members")
-
-
-def _check_conditioning(passage: Passage, size: int, values: dict) -> None:
-    """`railtrack.solvers.conditioning.check_conditioning` for every member, as `solve` does."""
-    omega_1 = 2.0 * np.pi * passage.speed / passage.wagon_length
-    ratio = np.sqrt(passage.rail_bending_stiffness / passage.rail_linear_mass) / passage.speed**2
-    estimate = np.broadcast_to(np.finfo(float).eps * omega_1 * ratio, (size, 1))[:, 0]
-    bad = np.flatnonzero(~(estimate <= ROUNDOFF_LIMIT))
-    if len(bad):
-        i = int(bad[0])
-        named = ", ".join(f"{k} = {float(np.ravel(v)[i])!r}" for k, v in values.items())
-        try:
-            check_conditioning(Passage(member(passage.track, i), member(passage.train, i)))
-        except ValueError as error:
-            others = f", and {len(bad) - 1} other(s)," if len(bad) > 1 else ""
-            raise ValueError(f"member {i} ({named}) of the sweep{others}: {error}") from None
-
-
-def _predicted(passage: Passage, law, size: int, accuracy: float) -> int:
-    """The largest m that `railtrack.solve` predicts at up to nine members spread over the sweep."""
-    picks = np.unique(np.linspace(0, size - 1, min(size, 9)).round().astype(int))
-    return max(predict_harmonics(Passage(member(passage.track, i), member(passage.train, i)),
-                                 member(law, i), accuracy / 2)[0] for i in picks)
+    return dataclasses.replace(result, values={k: np.array(v, dtype=float)
+                                               for k, v in values.items()})
 
 
 def _worst(result: Sweep) -> int | None:
@@ -311,39 +215,28 @@ def _worst(result: Sweep) -> int | None:
 
 def _solve(m, samples, initial, automatic, *, passage, law, size, tol, max_iterations) -> Sweep:
     """Every member at m harmonics, `BLOCK` members at a time."""
-    _require_fits(size, m)
+    require_fits(size, m)
     if samples is None:
         # exact for these laws, and a quarter of solve's default work per member;
         # a kinked law takes what solve takes: its default, or auto's for 'auto'
-        samples = _polynomial_samples(law, m) or (auto_samples(m) if automatic else None)
+        samples = polynomial_samples(law, m) or (auto_samples(m) if automatic else None)
     parts = []
     for start in range(0, size, BLOCK):
         index = np.arange(start, min(start + BLOCK, size))
-        block_passage = _rows(passage, index, size)
-        block_law = _rows(law, index, size)
+        block_passage = rows(passage, index, size)
+        block_law = rows(law, index, size)
         system = harmonic_system(block_passage, block_law, m, samples)
         outcome = newton_batch(system, len(index), max_iterations, tol,
                                None if initial is None else initial[index])
         errors = batch_truncation(system, outcome.coefficients, len(index))[0]
         parts.append((two_sided(outcome.coefficients), outcome.converged, outcome.iterations,
-                      outcome.residual, errors, _extremes(system, outcome.coefficients, len(index))))
+                      outcome.residual, errors,
+                      period_extremes(system, outcome.coefficients, len(index))))
     joined = [np.concatenate(column) for column in list(zip(*parts))[:5]]
     extremes = {k: np.concatenate([p[5][k] for p in parts]) for k in parts[0][5]}
     return Sweep(values={}, harmonics=m, coefficients=joined[0], converged=joined[1],
                  iterations=joined[2], residual=joined[3], truncation_error=joined[4],
                  passage=passage, foundation=law, **extremes)
-
-
-def _rows(value, index: np.ndarray, size: int):
-    """A batched dataclass (or Passage) restricted to the members `index`."""
-    if isinstance(value, Passage):
-        return Passage(_rows(value.track, index, size), _rows(value.train, index, size))
-    if len(index) == size:
-        return value
-    changes = {f.name: getattr(value, f.name)[index] for f in dataclasses.fields(value)
-               if isinstance(getattr(value, f.name), np.ndarray)
-               and getattr(value, f.name).ndim == 2 and getattr(value, f.name).shape[0] == size}
-    return dataclasses.replace(value, **changes) if changes else value
 
 
 def _warn(result: Sweep, automatic: bool, accuracy: float, swept: tuple) -> None:
@@ -367,23 +260,3 @@ def _warn(result: Sweep, automatic: bool, accuracy: float, swept: tuple) -> None
             f"harmonics={result.harmonics}: {int(np.sum(errors > limit))} member(s) of the sweep "
             f"have an estimated truncation error above {limit:.0%}, up to {errors[worst]:.1%} "
             f"at member {worst} ({advice})"), stacklevel=3)
-
-
-def _extremes(system, coefficients: np.ndarray, size: int) -> dict:
-    """Extremes over a period of w, the rail-seat load and the foundation force."""
-    m = system.harmonics
-    grid = _grid(m)
-    # omega is (m+1,) unless the passage is swept: seat_load_coefficients is
-    # elementwise, so it evaluates the rail's factors once per harmonic, not
-    # once per member and harmonic, and broadcasts them over the batch.
-    omega = system.omega
-    spectrum = np.zeros((3, size, grid // 2 + 1), dtype=complex)
-    spectrum[0, :, : m + 1] = coefficients * grid
-    spectrum[1, :, : m + 1] = 1j * omega * coefficients * grid
-    spectrum[2, :, : m + 1] = seat_load_coefficients(system.passage, omega, coefficients) * grid
-    w, rate, seat = np.fft.irfft(spectrum, grid, axis=-1)
-    with np.errstate(invalid="ignore", over="ignore"):
-        force = -np.broadcast_to(np.asarray(system.foundation.force(w, rate), dtype=float), w.shape)
-    return dict(lowest=_peak(w, -1.0), highest=_peak(w, 1.0), seat_load_peak=_peak(seat, 1.0),
-                seat_load_lowest=_peak(seat, -1.0), foundation_force_peak=_peak(force, 1.0),
-                foundation_force_lowest=_peak(force, -1.0))
