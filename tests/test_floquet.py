@@ -108,11 +108,15 @@ def test_linear_foundation_exponents_are_the_free_waves():
 
 
 @pytest.fixture(scope="module")
-def five_solutions():
-    branch = rt.continuation(FOLD_TRACK, rt.Train.paper(speed=300.0), FOLD_LAW, parameter="speed",
-                             start=300.0, stop=560.0, harmonics=25)
+def fold_branch():
+    return rt.continuation(FOLD_TRACK, rt.Train.paper(speed=300.0), FOLD_LAW, parameter="speed",
+                           start=300.0, stop=560.0, harmonics=25)
+
+
+@pytest.fixture(scope="module")
+def five_solutions(fold_branch):
     return [rt.solve(FOLD_TRACK, rt.Train.paper(speed=525.0), FOLD_LAW, harmonics=25, initial=c)
-            for c in branch.solutions_at(525.0)]
+            for c in fold_branch.solutions_at(525.0)]
 
 
 def test_verdicts_at_525_match_the_ring(five_solutions):
@@ -177,3 +181,27 @@ def test_multipliers_of_disturbances_two_wagons_long_match_a_ring_of_two_wagons(
         assert abs(abs(hill.dominant) - _richardson(*ring)) < 1e-3
         kinds.append(hill.kind)
     assert kinds.count("real -") == 3
+
+
+@pytest.mark.slow
+def test_stable_to_disturbances_of_one_wagon_unstable_to_those_of_two(fold_branch):
+    # At 539 m/s, between the second and the third fold, a solution is stable to
+    # every disturbance that repeats each wagon, but not to one that alternates
+    # from wagon to wagon (Bloch phase pi / 30 per sleeper): the one-wagon ring
+    # stays on it, the two-wagon ring kicked by a small random disturbance leaves.
+    solutions = [rt.solve(FOLD_TRACK, rt.Train.paper(speed=539.0), FOLD_LAW, harmonics=25,
+                          initial=c) for c in fold_branch.solutions_at(539.0)]
+    stable = sorted((s for s in solutions if rt.floquet(s).stable),
+                    key=lambda s: s.one_period()[1].min())
+    # three solutions, two of them stable: the deeper (-1.74 mm) is the one
+    # between the folds, the other (-1.45 mm) is on the last part
+    assert len(solutions) == 3 and len(stable) == 2
+    solution = stable[0]
+    scan = rt.floquet(solution, theta="scan")
+    assert not scan.stable and scan.most_unstable > 0
+    alternating = rt.floquet(solution, np.pi / 30)
+    assert abs(alternating.dominant) > 1.2
+    ring = dict(periods=20, max_periods=40, elements_per_span=4, kick=1e-4)
+    one = rt.check_stability(solution, steps_per_period=600, **ring)
+    two = rt.check_stability(solution, steps_per_period=1200, wagons=2, **ring)
+    assert one.stable and not two.stable
