@@ -46,7 +46,7 @@ from railtrack.plotting.book import paper_figures as pf  # noqa: E402
 from railtrack.plotting.book import passage as pp  # noqa: E402
 from railtrack.plotting.book import rail_span as rs  # noqa: E402
 from railtrack.plotting.book import speed as sp  # noqa: E402
-from railtrack.plotting.branch import plot_branch, ramp_on_branch  # noqa: E402
+from railtrack.plotting.branch import plot_branch, plot_multipliers, ramp_on_branch  # noqa: E402
 from railtrack.plotting.solution import plot_solution  # noqa: E402
 from railtrack.plotting.book import speed_laws as sl  # noqa: E402
 from railtrack.plotting.book import track_engineer as te  # noqa: E402
@@ -194,6 +194,17 @@ def _branch(stable):
         stable=None if stable is None else np.arange(len(values)) < 29, checks={10: None, 45: None})
 
 
+def _floquet_branch():
+    """The made-up branch judged by Hill's method: |mu| crosses 1 at the folds and once more."""
+    branch = _branch(True)
+    size = np.where(branch.stable, 0.8, 1.3)
+    size[50:] = 0.9
+    changes = [types.SimpleNamespace(value=500.0, index=29, kind="fold", gains=False),
+               types.SimpleNamespace(value=452.0, index=40, kind="complex", gains=True)]
+    return types.SimpleNamespace(**{**vars(branch), "multipliers": size.astype(complex),
+                                    "changes": changes, "stable": size < 1})
+
+
 def _ramp(speeds):
     speeds = np.asarray(speeds, float)
     converged = np.ones(len(speeds), bool)
@@ -272,6 +283,9 @@ FIGURES = {
         _branch(True), linear=(np.linspace(300.0, 600.0, 31), -1e-3 * np.ones(31)),
         ramps={"ring, rising speed": _ramp(np.linspace(440.0, 700.0, 14)),
                "ring, falling speed": _ramp(np.linspace(700.0, 440.0, 14))}),
+    "branch.plot_branch (stability by Floquet)": lambda: plot_branch(_floquet_branch()),
+    "branch.plot_multipliers": lambda: plot_multipliers(
+        _floquet_branch(), scanned=np.full(61, 1.1)),
     "speed.plot_seat_load_histogram": lambda: sp.plot_seat_load_histogram(
         np.random.default_rng(0).normal(0.37, 0.01, 500)),
     "speed_laws.plot_law_curves": lambda: sl.plot_law_curves(*_law_curves(), title="t"),

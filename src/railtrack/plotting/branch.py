@@ -13,7 +13,7 @@ from matplotlib.figure import Figure
 from ..solvers.solve import solve
 from .style import BLACK, BLUE, MM, ORANGE, PURPLE, VERMILLION, new_figure
 
-__all__ = ["plot_branch", "ramp_on_branch"]
+__all__ = ["plot_branch", "plot_multipliers", "ramp_on_branch"]
 
 
 def ramp_on_branch(ramp, branch, samples: int = 4096) -> list[tuple[int, float] | None]:
@@ -74,15 +74,24 @@ def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = Non
         ax.plot(branch.values, dip, "-", color=BLUE, lw=1.5, label="cubic law, continued branch",
                 gid="branch")
     else:
+        by_hill = getattr(branch, "multipliers", None) is not None
+        judge = "Floquet" if by_hill else "ring"
         for flag, style, label in ((True, "-", "stable"), (False, ":", "unstable")):
             drawn = branch.stable == flag
             drawn[1:] |= drawn[:-1].copy()   # one point on, so that the pieces meet
             shown = np.where(drawn, dip, np.nan)
             ax.plot(branch.values, shown, style, color=BLUE, lw=1.5,
-                    label=f"branch, {label} (ring)", gid=f"branch-{label}")
-        checked = np.array(sorted(branch.checks))
-        ax.plot(branch.values[checked], dip[checked], "o", mfc="none", color=BLUE, ms=5,
-                label="checked by the ring", gid="checked")
+                    label=f"branch, {label} ({judge})", gid=f"branch-{label}")
+        if by_hill:
+            tori = [c for c in branch.changes if c.kind != "fold"]
+            at = [np.interp(c.value, branch.values[c.index:c.index + 2],
+                            dip[c.index:c.index + 2]) for c in tori]
+            ax.plot([c.value for c in tori], at, "s", mfc="none", color=VERMILLION, ms=6,
+                    label="stability changes away from folds", gid="changes")
+        else:
+            checked = np.array(sorted(branch.checks))
+            ax.plot(branch.values[checked], dip[checked], "o", mfc="none", color=BLUE, ms=5,
+                    label="checked by the ring", gid="checked")
     indices = [fold.index for fold in branch.folds]
     ax.plot(branch.values[indices], dip[indices], "D", color=BLACK, ms=5, label="folds",
             gid="folds", zorder=4)
@@ -104,6 +113,50 @@ def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = Non
     ax.set_xlabel("train speed v [m/s]")
     ax.set_ylabel("largest sleeper dip −min w [mm]")
     ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def plot_multipliers(branch, *, scanned=None) -> Figure:
+    """The dominant Floquet multiplier |mu| along a branch, against the unit circle.
+
+    Parameters
+    ----------
+    branch : Branch
+        After `railtrack.check_branch` with Hill's method (``branch.multipliers`` set).
+    scanned : array_like, optional
+        |mu| of the most unstable disturbance of any wavelength at each point
+        (`railtrack.floquet` with ``theta="scan"``), drawn dashed.
+
+    Each part between folds is drawn in turn from the branch's start; folds
+    are black diamonds, the other changes of stability open squares labelled
+    with their kind.
+    """
+    if getattr(branch, "multipliers", None) is None:
+        raise ValueError("the branch has no multipliers: run rt.check_branch(branch) first")
+    fig, ax = new_figure()
+    size = np.abs(branch.multipliers)
+    ax.semilogy(branch.values, size, "-", color=BLUE, lw=1.3,
+                label="dominant |μ|, disturbances that repeat every wagon", gid="multiplier")
+    if scanned is not None:
+        ax.semilogy(branch.values, np.asarray(scanned), "--", color=ORANGE, lw=1.1,
+                    label="dominant |μ|, disturbances of any wavelength", gid="scanned")
+    ax.axhline(1.0, color=BLACK, lw=0.8, gid="unit-circle")
+    names = {"real +": "real, +1", "real -": "real, −1", "complex": "complex pair"}
+    for change in branch.changes:
+        i = change.index
+        y = np.interp(change.value, branch.values[i:i + 2], size[i:i + 2])
+        y = 1.0 if change.kind == "fold" else y
+        fold = change.kind == "fold"
+        ax.plot(change.value, y, "D" if fold else "s", color=BLACK if fold else VERMILLION,
+                mfc=BLACK if fold else "none", ms=5, gid="change")
+        if not fold:
+            ax.annotate(f"{names[change.kind]}, {change.value:.1f} m/s", (change.value, y),
+                        fontsize=7, xytext=(4, -10 if change.gains else 6),
+                        textcoords="offset points")
+    ax.set_xlabel("train speed v [m/s]")
+    ax.set_ylabel("largest Floquet multiplier |μ| per period [-]")
+    ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     return fig
 
