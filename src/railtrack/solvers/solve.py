@@ -5,61 +5,47 @@
 * ``"analytic"``: eq. (23), for a `LinearFoundation` only (`railtrack.equations.linear`).
 
 `solve` checks its arguments, looks the method up in `METHODS`, runs it and
-packs the outcome into a `Solution`.  Not converging is a result
+packs the outcome into a `Solution`; how it chooses m is
+`railtrack.solvers.auto_harmonics`.  Not converging is a result
 (``converged=False``), not an exception, unless ``strict=True``.
 """
 
 from __future__ import annotations
 
-import math
 import warnings
 
 import numpy as np
 
-from .arguments import checked_initial, require_count, require_fraction
+from .arguments import require_count, require_fraction
+from .auto_harmonics import (
+    AUTO_ROUNDS,
+    DEFAULT_ACCURACY,
+    WARM_START_ABOVE as WARM_START_ABOVE,
+    WARN_TRUNCATION,
+    first_system,
+    next_system,
+    truncation_warning,
+)
 from .diagnosis import convergence_error
 from .fixed_point import SolverOutcome, automatic_split, contraction_factors, iterate_fixed_point
 from .foundation_at_rest import check_foundation_at_rest
 from ..model.foundations import as_foundation
-from ..equations.harmonic_balance import (
-    HarmonicSystem,
-    require_jacobian_samples,
-    residual,
-    residual_norm,
-    two_sided,
-)
+from ..equations.harmonic_balance import HarmonicSystem, residual, residual_norm, two_sided
 from ..equations.linear import analytic_coefficients
 from .newton import iterate_newton, linear_guess
 from .conditioning import check_conditioning
-from .solution import ConvergenceWarning, Solution, TruncationWarning
+from .solution import ConvergenceWarning, Solution
 from .speed_path import not_converged_advice, speed_path
 from ..model.passage import Passage
 from ..model.track import Track
 from ..model.train import Train
-from .truncation import (
-    MAX_AUTO_HARMONICS,
-    TAIL_FACTOR,
-    auto_samples,
-    estimate_of,
-    grown_harmonics,
-    padded,
-    predict_harmonics,
-    track_spectrum,
-)
+from .truncation import estimate_of
 
 __all__ = ["solve", "METHODS", "DEFAULT_ACCURACY", "WARN_TRUNCATION"]
 
-DEFAULT_ACCURACY = 1e-3
-"""Relative truncation error (max norm of w over the period / peak) that harmonics="auto" meets."""
-WARN_TRUNCATION = 1e-2
-"""An explicit m whose estimated truncation error exceeds this warns (`TruncationWarning`)."""
 DEFAULT_TOL = 1e-10
 ANALYTIC_ROUND_OFF = 1e-8
 """Eq. (23) counts as solved when its residual in eq. (17) is finite and below this."""
-AUTO_ROUNDS = 4
-WARM_START_ABOVE = 60
-"""harmonics="auto" reaches a predicted m above this through a solve at m / 4 first:
-Newton on a kinked law with long lifted stretches needs far fewer steps from there."""
 
 
 def _newton(system: HarmonicSystem, tol, max_iterations, split, initial) -> SolverOutcome:
@@ -212,28 +198,19 @@ def solve(
     if max_iterations is not None:
         max_iterations = require_count("max_iterations", max_iterations, 0)
     if automatic and (samples is not None or initial is not None):
-        raise ValueError("samples and initial need an explicit harmonics=m; 'auto' chooses m itself")
+        raise ValueError("samples and initial need an explicit harmonics=m; "
+                         "'auto' chooses m itself")
     if method != "fixed-point" and split is not None:
         warnings.warn(f"split is used by method='fixed-point' only; ignored by {method!r}")
     if split is not None and split != "auto":
         require_count("split (N0)", split, 0)
     foundation = as_foundation(foundation)
     if check_foundation:
-        check_foundation_at_rest(foundation, float(passage.pad_stiffness), float(passage.pad_damping))
+        check_foundation_at_rest(foundation, float(passage.pad_stiffness),
+                                 float(passage.pad_damping))
 
-    if automatic:
-        target, spectrum = predict_harmonics(passage, foundation, accuracy / 2)
-        coarse = method == "analytic" or target <= WARM_START_ABOVE
-        m = target if coarse else max(15, target // 4)
-        system = spectrum.system(passage, foundation, m, auto_samples(m))
-    else:
-        m = target = int(harmonics)
-        if samples is not None:
-            require_jacobian_samples(samples, m)
-        # one evaluation of eq. (3) serves the solve and its truncation estimate
-        spectrum = track_spectrum(passage, TAIL_FACTOR * m)
-        system = spectrum.system(passage, foundation, m, samples)
-        initial = None if initial is None else checked_initial(initial, m)
+    m, target, spectrum, system, initial = first_system(
+        passage, foundation, harmonics, automatic, method, accuracy, samples, initial)
 
     iterations, path = 0, None
     for _round in range(AUTO_ROUNDS + 1):
@@ -249,20 +226,12 @@ def solve(
         estimate, tail = estimate_of(system, outcome.coefficients, spectrum)
         if not automatic or not outcome.converged or tail is None:
             break
-        if m >= target and (estimate <= accuracy or m >= MAX_AUTO_HARMONICS):
+        grown = next_system(passage, foundation, method, m, target, estimate, accuracy,
+                            outcome.coefficients, tail, spectrum)
+        if grown is None:
             break
-        if m < target:
-            grown = target
-        else:
-            # the solution and its estimated tail are the best spectrum known:
-            # choose the next m from it, as the prediction did from eq. (23)
-            grown = min(MAX_AUTO_HARMONICS, max(
-                math.ceil(1.1 * m), grown_harmonics(outcome.coefficients, tail, 0.8 * accuracy)))
-        if spectrum.upto < TAIL_FACTOR * grown:
-            spectrum = track_spectrum(passage, TAIL_FACTOR * grown)
-        initial = padded(outcome.coefficients, tail, grown) if method != "analytic" else None
-        m = target = grown
-        system = spectrum.system(passage, foundation, grown, auto_samples(grown))
+        m, spectrum, system, initial = grown
+        target = m
 
     message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
     if path is not None and path.outcome is None:
@@ -270,18 +239,10 @@ def solve(
     if automatic:
         message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
                     f"estimated truncation error {estimate:.1e})")
-    if outcome.converged and np.isfinite(estimate) and estimate > (accuracy if automatic else WARN_TRUNCATION):
-        if not automatic:
-            fix = f"harmonics='auto' picks m = {predict_harmonics(passage, foundation, DEFAULT_ACCURACY / 2)[0]}"
-        elif m >= MAX_AUTO_HARMONICS:
-            fix = f"the largest m that 'auto' takes is {MAX_AUTO_HARMONICS}"
-        else:
-            fix = f"'auto' stopped after {AUTO_ROUNDS + 1} solves"
-        advice = "pass a larger harmonics" if automatic else "pass a larger harmonics or use 'auto'"
-        warnings.warn(TruncationWarning(
-            f"harmonics={m}: the estimated truncation error is {estimate:.1%} of the peak "
-            f"sleeper displacement; {fix} ({advice})"
-        ), stacklevel=2)
+    limit = accuracy if automatic else WARN_TRUNCATION
+    if outcome.converged and np.isfinite(estimate) and estimate > limit:
+        warnings.warn(truncation_warning(passage, foundation, m, estimate, automatic),
+                      stacklevel=2)
     solution = Solution(
         passage=passage,
         foundation=foundation,
@@ -324,7 +285,8 @@ def _run(method, system, tol, max_iterations, split, initial):
                 note = (f"no split N0 in 0..{system.harmonics} makes every contraction factor "
                         f"of eq. (21) < 1 (the best, N0 = {used}, has {worst:.3g})")
         elif split > system.harmonics:
-            raise ValueError(f"split (N0) must be 'auto' or an integer in 0..{system.harmonics}; got {split!r}")
+            raise ValueError(f"split (N0) must be 'auto' or an integer in "
+                             f"0..{system.harmonics}; got {split!r}")
         else:
             used = int(split)
     return METHODS[method](system, tol, max_iterations, used, initial), used, note
