@@ -30,11 +30,11 @@ difference, so every coefficient here is finite there (`difference_kernels`).
 
 from __future__ import annotations
 
-from math import comb, factorial
-
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .lattice_tail import lattice_kernels
+from .positions import MAX_PHASE_ROUNDOFF, check_positions
 from .receptance import _sech, _sinc, _tanhc, bending_wavenumber, receptance_factors
 from .sleeper import pad_stiffness, rail_coefficients
 from ..model.passage import Passage
@@ -50,50 +50,7 @@ __all__ = [
     "check_positions",
 ]
 
-MAX_PHASE_ROUNDOFF = 1e-3
-"""Largest round-off of the highest harmonic's phase omega_m |x| / v accepted [rad].
-
-A double carries the phase to eps = 2.2e-16 of itself, so at |x| the phase
-of harmonic m is uncertain by eps omega_m |x| / v.  Measured on the paper's
-case (m = 24, 45 m/s) at whole wagons ahead, where the rail repeats: the
-displacement is off by ~0.05 and the bending moment by ~0.2-0.4 times that
-round-off of the peak (9e-5 and 4e-4 at 1.9e-3 rad; 8 % and 51 % at
-1.9 rad, |x| = 1e15 m, where the phase has no digit left).  At 1e-3 rad,
-|x| = 5.4e11 m there, round-off stays below the accuracy of the truncation.
-"""
-
-_BERNOULLI = (1.0, -0.5, 1.0 / 6.0, 0.0, -1.0 / 30.0, 0.0, 1.0 / 42.0, 0.0)
-_TERMS = 128      # wavenumbers kept on each side by the near-singular branch
-_SWITCH = 4.0     # |q^4 - a^4| below which that branch is used
-
-
-def check_positions(passage: Passage, omega: ArrayLike, x: ArrayLike) -> None:
-    """Refuse positions x at which round-off leaves the phases omega x / v no digits.
-
-    Raises ValueError for a non-finite x, or where ``eps max|omega| max|x| / v``
-    exceeds `MAX_PHASE_ROUNDOFF`; the message gives the bound on |x|.
-    """
-    x = np.asarray(x, dtype=float)
-    if x.size == 0:
-        return
-    if not np.all(np.isfinite(x)):
-        raise ValueError(f"positions x must be finite numbers [m]; got {x[~np.isfinite(x)][0]!r}")
-    far = float(np.max(np.abs(x)))
-    per_metre = float(np.max(np.abs(np.asarray(omega, dtype=float)), initial=0.0)) / float(
-        passage.speed)
-    roundoff = np.finfo(float).eps * far * per_metre
-    if roundoff > MAX_PHASE_ROUNDOFF:
-        bound = MAX_PHASE_ROUNDOFF / (np.finfo(float).eps * per_metre)
-        spans = float(passage.wagon_length) / float(passage.sleeper_spacing)
-        hint = (f" The rail repeats every wagon (H / L = {spans:.0f} spans): ask for x modulo "
-                f"H = {float(passage.wagon_length):g} m." if abs(spans - round(spans)) < 1e-9
-                else "")
-        raise ValueError(
-            f"|x| = {far:.3g} m is too far for double precision: the phase omega x / v of the "
-            f"highest harmonic ({per_metre * far:.3g} rad) carries a round-off of "
-            f"{roundoff:.2g} rad, and the result would be round-off, not the rail "
-            f"(MAX_PHASE_ROUNDOFF = {MAX_PHASE_ROUNDOFF:g} rad).  This solution accepts "
-            f"|x| <= {bound:.3g} m.{hint}")
+_SWITCH = 4.0     # |q^4 - a^4| below which the near-singular branch (lattice_tail) is used
 
 
 def _expm1c(y):
@@ -190,45 +147,14 @@ def offset_receptance_lattice_sum(passage: Passage, omega: ArrayLike, x: ArrayLi
     """
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
     x = np.atleast_1d(np.asarray(x, dtype=float))
-    kappa = omega[:, None] / passage.speed + 2.0 * np.pi * np.arange(-terms, terms + 1) / passage.sleeper_spacing
+    kappa = (omega[:, None] / passage.speed
+             + 2.0 * np.pi * np.arange(-terms, terms + 1) / passage.sleeper_spacing)
     kb4 = (bending_wavenumber(passage, omega) ** 4)[:, None]
     weight = (-(kappa**2)) ** (derivative // 2) / (kappa**4 - kb4)
     out = np.empty((x.size, omega.size), dtype=complex)
     for i, xx in enumerate(x):
         out[i] = np.sum(weight * np.exp(-1j * kappa * xx), axis=-1)
     return out / (passage.rail_bending_stiffness * passage.sleeper_spacing)
-
-
-def _bernoulli_sum(p: int, xi: np.ndarray) -> np.ndarray:
-    """sum_{j != 0} e^{-2 pi i j xi} / (2 pi j)^p = -(-i)^p B_p(xi) / p!, 0 <= xi <= 1, p >= 2."""
-    poly = sum(comb(p, k) * _BERNOULLI[k] * xi ** (p - k) for k in range(p + 1))
-    return -((-1j) ** p) * poly / factorial(p)
-
-
-def _lattice_kernels(q: np.ndarray, a: np.ndarray, xi: np.ndarray):
-    """sum_{j != 0} (e^{-2 pi i j xi} - 1) f_j and sum_{j != 0} (q^2 f_j - e^{...} u_j'^2 f_j).
-
-    f_j = 1 / ((q + 2 pi j)^4 - a^4).  The first four terms of the expansion
-    of f_j (and of (q + 2 pi j)^2 f_j) in powers of 1/(2 pi j) are summed in
-    closed form with Bernoulli polynomials; the rest falls like j^-8 (j^-6)
-    and is summed over |j| <= 128.  Shapes (X, W) from q, a (W,) and xi (X,).
-    """
-    j = np.concatenate([np.arange(-_TERMS, 0), np.arange(1, _TERMS + 1)]).astype(float)
-    u = 2.0 * np.pi * j[:, None]                       # (J, 1)
-    f = 1.0 / ((q + u) ** 4 - a**4)                    # (J, W)
-    g = (q + u) ** 2 * f
-    f_series = [(4, 1.0), (5, -4.0 * q), (6, 10.0 * q**2), (7, -20.0 * q**3)]
-    g_series = [(2, 1.0), (3, -2.0 * q), (4, 3.0 * q**2), (5, -4.0 * q**3)]
-    # complex, so that the products below are one BLAS call each
-    f_rest = (f - sum(c * u ** (-p) for p, c in f_series)).astype(complex)
-    g_rest = (g - sum(c * u ** (-p) for p, c in g_series)).astype(complex)
-    wave = np.exp(-2j * np.pi * np.multiply.outer(xi, j))   # (X, J)
-    xi = xi[:, None]
-    zero = np.zeros_like(xi)
-    f_all = f_rest.sum(axis=0) + sum(c * _bernoulli_sum(p, zero) for p, c in f_series)
-    f_wave = wave @ f_rest + sum(c * _bernoulli_sum(p, xi) for p, c in f_series)
-    g_wave = wave @ g_rest + sum(c * _bernoulli_sum(p, xi) for p, c in g_series)
-    return f_wave - f_all, q**2 * f_all - g_wave
 
 
 def difference_kernels(passage: Passage, omega: ArrayLike, xi: ArrayLike):
@@ -244,7 +170,7 @@ def difference_kernels(passage: Passage, omega: ArrayLike, xi: ArrayLike):
     finite at omega = 0 and where omega/v = k_b.  Evaluated from the closed
     form when ``|q^4 - a^4| >= 4`` (no cancellation), otherwise as
     ``4 gap e^{-iq xi} sum_{j != 0}`` with the analytic tail
-    (`_lattice_kernels`); both agree with the brute-force sum to ~1e-12.
+    (`railtrack.equations.lattice_tail`); both agree with the brute-force sum to ~1e-12.
 
     Returns
     -------
@@ -260,14 +186,15 @@ def difference_kernels(passage: Passage, omega: ArrayLike, xi: ArrayLike):
         lam = np.where(near, 0.0, (u - v - shift * (u0 - v0)) / quartic)
         lam2 = np.where(near, 0.0, (-(a**2) * (u + v) + q**2 * shift * (u0 - v0)) / quartic)
     if np.any(near):
-        first, second = _lattice_kernels(q[near], a[near], xi)
+        first, second = lattice_kernels(q[near], a[near], xi)
         lam[:, near] = 4.0 * gap[near] * shift[:, near] * first
         lam2[:, near] = 4.0 * gap[near] * shift[:, near] * second
     return lam, lam2
 
 
 def _reaction_factor(passage: Passage, omega: np.ndarray, sleeper: np.ndarray) -> np.ndarray:
-    """G = A [c (q^4 - a^4) + (sum_j Q_j e^{-i omega d_j/v}) L^4 / (H EI)] / (denominator + A numerator)."""
+    """G = A [c (q^4 - a^4) + (sum_j Q_j e^{-i omega d_j/v}) L^4 / (H EI)]
+    / (denominator + A numerator)."""
     span, ei = passage.sleeper_spacing, passage.rail_bending_stiffness
     factors = receptance_factors(passage, omega)
     stiffness = pad_stiffness(passage, omega)
@@ -329,7 +256,8 @@ def rail_field_coefficients(passage: Passage, omega: ArrayLike, sleeper: ArrayLi
     # each offset within the span once (to 1e-12 of a span).
     rounded = np.round(xi / passage.sleeper_spacing, 12)
     _, first, inverse = np.unique(rounded, return_index=True, return_inverse=True)
-    lam, lam2 = (kernel[inverse.ravel()] for kernel in difference_kernels(passage, omega, xi[first]))
+    lam, lam2 = (kernel[inverse.ravel()]
+                 for kernel in difference_kernels(passage, omega, xi[first]))
     factor = _reaction_factor(passage, omega, sleeper)
     shift = np.exp(-1j * q * xi[:, None])
     bloch = np.exp(-1j * q * k[:, None])
