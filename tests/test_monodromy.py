@@ -181,8 +181,8 @@ def test_refuses_what_it_cannot_linearise(default_525):
         ring_multipliers(default_525, steps_per_period=601)
     with pytest.raises(ValueError, match="wagons must be an integer"):
         ring_multipliers(default_525, wagons=0)
-    with pytest.warns(UserWarning, match="did not converge"):
-        unconverged = solve(FOLD_TRACK, FOLD_TRAIN, FOLD_LAW, harmonics=25, max_iterations=1)
+    # an explicit max_iterations that runs out is quiet (the caller's budget, 7d66463)
+    unconverged = solve(FOLD_TRACK, FOLD_TRAIN, FOLD_LAW, harmonics=25, max_iterations=1)
     assert not unconverged.converged
     with pytest.raises(ValueError, match="has not converged"):
         ring_multipliers(unconverged)
