@@ -1,12 +1,15 @@
 """Speed and iteration counts of the railtrack solvers on the paper's cases.
 
-Run with ``make bench``.  Prints Markdown tables: the machine, the median
-wall time of each solve (median over several runs, each run timing a batch
-of repeated solves), and the iterations each method needs to reach a
-relative residual of 1e-10 of eq. (17).  Each solve includes its
-truncation estimate; "auto" also picks m (railtrack.solvers.truncation).  Times are
-wall-clock on whatever else the machine is doing; the iteration counts are
-exact.
+Run with ``make bench`` (all sections), or ``python benchmarks/bench.py
+stability`` for some of them (``solvers``, ``sweep``, ``stability``).
+Prints Markdown tables: the machine, the median wall time of each solve
+(median over several runs, each run timing a batch of repeated solves), and
+the iterations each method needs to reach a relative residual of 1e-10 of
+eq. (17).  Each solve includes its truncation estimate; "auto" also picks m
+(railtrack.solvers.truncation).  Times are wall-clock on whatever else the
+machine is doing; the iteration counts are exact.  The stability section
+times Hill's method (`rt.floquet`, `rt.check_branch`) and the linearised
+ring (`rt.ring_multipliers`) on chapter 10's fold track.
 """
 
 from __future__ import annotations
@@ -31,6 +34,8 @@ CASES = {
 RUNS = 7
 RATIO_RUNS = 15
 """Runs of the auto / m = 15 ratio: single runs on a shared 2-core VM range over 0.8-3x."""
+BRANCH_RUNS = 3
+"""Runs of `rt.check_branch` on the fold branch (about 10 s each)."""
 
 
 def median_time(function, repeat: int) -> float:
@@ -79,7 +84,6 @@ def machine() -> str:
 
 def main() -> None:
     track, train = rt.Track.paper(), rt.Train.paper()
-    print(f"Machine: {machine()}\n")
     print(f"m = {HARMONICS} harmonics unless 'auto', Table 1 track, median of {RUNS} runs.\n")
     print("| case | Newton, m = 15 [ms] | Newton, m = 'auto' [ms] (m chosen) "
           "| auto / m = 15 (timed together) "
@@ -163,9 +167,54 @@ def bench_sweep() -> None:
     print(f"| loop / sweep | {loop / batch:.1f} |")
 
 
+def bench_stability() -> None:
+    """Floquet multipliers by Hill's method against the solve, the ring and a whole branch.
+
+    Chapter 10's fold track at m = 25: `rt.floquet` of the 525 m/s solution
+    (timed back to back with the solve), `rt.ring_multipliers` of the same
+    solution at 600 steps a period, and `rt.check_branch` of the branch from
+    300 to 700 m/s (its target: under 10 s; the ring-based check took 424 s).
+    """
+    track, law = rt.Track.paper(pad_damping=1e5), rt.CubicFoundation(20e6, 2e13, 0.8, 5000.0)
+    train = rt.Train.paper(speed=525.0)
+    solution = rt.solve(track, train, law, harmonics=25)
+    solve_time = median_time(lambda: rt.solve(track, train, law, harmonics=25), 20)
+    floquet_time = median_time(lambda: rt.floquet(solution), 3)
+    ratio = median_ratio(lambda: rt.floquet(solution),
+                         lambda: rt.solve(track, train, law, harmonics=25), 1)
+    ring_time = median_time(lambda: rt.ring_multipliers(solution, steps_per_period=600), 1)
+    branch = rt.continuation(track, rt.Train.paper(speed=300.0), law, "speed", start=300.0,
+                             stop=700.0, harmonics=25)
+    branch_runs = []
+    for _ in range(BRANCH_RUNS):
+        start = time.perf_counter()
+        checked = rt.check_branch(branch)
+        branch_runs.append(time.perf_counter() - start)
+    print()
+    print("| stability on the fold track (chapter 10), m = 25 | time [ms] |")
+    print("|---|---:|")
+    print(f"| `rt.solve` at 525 m/s | {solve_time * 1e3:.1f} |")
+    print(f"| `rt.floquet` of that solution (Hill's method, {solution.harmonics} harmonics) "
+          f"| {floquet_time * 1e3:.0f} |")
+    print(f"| floquet / solve, timed back to back (median of {RATIO_RUNS}) | {ratio:.0f} |")
+    print(f"| `rt.ring_multipliers`, 600 steps a period | {ring_time * 1e3:.0f} |")
+    print(f"| `rt.check_branch` of the 300-700 m/s branch ({len(branch.values)} points, "
+          f"{len(branch.folds)} folds, {len(checked.changes)} changes; median of "
+          f"{BRANCH_RUNS} runs) | {statistics.median(branch_runs) * 1e3:.0f} |")
+
+
+SECTIONS = {"solvers": main, "sweep": bench_sweep, "stability": bench_stability}
+
+
 if __name__ == "__main__":
+    import sys
     import warnings
 
     warnings.simplefilter("ignore", rt.TruncationWarning)   # m = 15 is the paper's choice here
-    main()
-    bench_sweep()
+    unknown = [name for name in sys.argv[1:] if name not in SECTIONS]
+    if unknown:
+        sys.exit(f"unknown section(s) {unknown}; choose from {sorted(SECTIONS)} (none: all)")
+    threads = os.environ.get("OMP_NUM_THREADS", "unset (BLAS's default)")
+    print(f"Machine: {machine()}, OMP_NUM_THREADS {threads}\n")
+    for name in sys.argv[1:] or SECTIONS:
+        SECTIONS[name]()
