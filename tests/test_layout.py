@@ -28,7 +28,7 @@ PUBLIC = {
     "offset_receptance", "rail_coupling", "load_coefficients", "axle_factor",
     "simulate_time_domain", "TimeDomainSolution", "TimeStepWarning", "LongRunWarning",
     "NonFiniteLawError", "estimate_step_error", "explore", "dissipation", "Dissipation",
-    "load_work", "floquet", "Floquet", "StabilityChange",
+    "load_work", "floquet", "Floquet", "StabilityChange", "UnstableSolutionWarning",
     "ring_multipliers", "RingMultipliers",
 }
 

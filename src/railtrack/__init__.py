@@ -47,6 +47,7 @@ from .studies.sweep import Sweep, sweep
 from .studies.continuation import continuation
 from .studies.branch import Branch, Fold, StabilityChange
 from .solvers.floquet import Floquet, floquet
+from .solvers.stability_hint import UnstableSolutionWarning
 from .studies.stability import StabilityCheck, check_stability
 from .studies.branch_stability import check_branch
 from .studies.ramp import SpeedRamp, speed_ramp
@@ -93,6 +94,7 @@ __all__ = [
     "StabilityChange",
     "floquet",
     "Floquet",
+    "UnstableSolutionWarning",
     "check_stability",
     "StabilityCheck",
     "check_branch",

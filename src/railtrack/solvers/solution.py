@@ -97,6 +97,9 @@ class Solution:
         (`railtrack.solvers.truncation.truncation_error`); NaN if the solve diverged.
         The rail-seat load and the moment have their own, larger errors:
         `truncation_errors`.
+    stability : railtrack.Floquet or None
+        The Floquet multipliers, where ``solve(..., stability="full")`` computed
+        them (`railtrack.floquet`); None otherwise.
     """
 
     passage: Passage
@@ -111,6 +114,7 @@ class Solution:
     split: int | None = None
     samples: int | None = None
     truncation_error: float = float("nan")
+    stability: Any = None
 
     @property
     def track(self):

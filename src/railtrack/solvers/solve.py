@@ -12,6 +12,7 @@ packs the outcome into a `Solution`; how it chooses m is
 
 from __future__ import annotations
 
+import dataclasses
 import warnings
 
 import numpy as np
@@ -35,6 +36,7 @@ from ..equations.linear import analytic_coefficients
 from .newton import iterate_newton, linear_guess
 from .conditioning import check_conditioning
 from .solution import ConvergenceWarning, Solution
+from .stability_hint import judge_stability
 from .speed_path import not_converged_advice, speed_path
 from ..model.passage import Passage
 from ..model.track import Track
@@ -90,6 +92,7 @@ def solve(
     strict: bool = False,
     check_foundation: bool = True,
     fallback: bool = True,
+    stability: str = "quick",
 ) -> Solution:
     """Periodic response of a sleeper on a (nonlinear) foundation, eqs. (12)–(23).
 
@@ -146,6 +149,13 @@ def solve(
         (`railtrack.solvers.speed_path`) and land on this speed; the message
         says so.  Where several solutions exist this finds one of them:
         `railtrack.continuation` lists them all.  False: give up at once.
+    stability : {"quick", "full", "off"}
+        After a converged solve of a nonlinear law, look at its Floquet
+        multipliers (`railtrack.solvers.stability_hint`): "quick" warns
+        (`UnstableSolutionWarning`) when the disturbances that repeat every
+        sleeper show it unstable, at about twice the cost of the solve, and
+        proves nothing when they do not; "full" runs `railtrack.floquet` and
+        keeps its result as ``Solution.stability``.
 
     Returns
     -------
@@ -259,6 +269,9 @@ def solve(
     )
     if strict and not solution.converged:
         raise convergence_error(method, outcome, solution, message)
+    judged = judge_stability(solution, stability)
+    if judged is not None:
+        solution = dataclasses.replace(solution, stability=judged)
     budget_spent = max_iterations is not None and outcome.iterations >= max_iterations
     if not solution.converged and not budget_spent:
         # an explicit max_iterations that runs out is the caller's budget (the

@@ -1,0 +1,72 @@
+"""Whether the periodic solution `solve` returns is one a train can stay on.
+
+Harmonic balance converges to unstable periodic solutions as readily as to
+stable ones (on the fold track of chapter 10, `solve` lands on an unstable
+solution at every speed from 475 to 535 m/s).  After a converged solve of a
+nonlinear law, `judge_stability` looks at the Floquet multipliers
+(`railtrack.solvers.floquet`):
+
+* ``"quick"`` (the default of `solve`): the strip of one Bloch phase only,
+  the disturbances that repeat every sleeper, about twice the cost of the
+  solve.  It warns when it finds a multiplier outside the unit circle; when
+  it finds none it proves nothing, since the other 29 phases of a 30-sleeper
+  wagon are not looked at.
+* ``"full"``: `rt.floquet` with its defaults (every disturbance that repeats
+  every wagon), about twenty times the cost of the solve; the result is
+  kept on the solution (`Solution.stability`).
+* ``"off"``: nothing.
+
+A linear law is not looked at: with positive damping every disturbance of
+the linear track dies out.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+from ..model.foundations import LinearFoundation
+from .floquet import Floquet, floquet
+from .solution import Solution
+
+__all__ = ["UnstableSolutionWarning", "STABILITY_MODES", "judge_stability"]
+
+STABILITY_MODES = ("quick", "full", "off")
+
+
+class UnstableSolutionWarning(UserWarning):
+    """The periodic solution found is unstable: a train does not stay on it."""
+
+
+def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floquet | None:
+    """Warn if `solution` is unstable; the full `Floquet` result for ``mode="full"``.
+
+    Parameters
+    ----------
+    solution : Solution
+    mode : {"quick", "full", "off"}
+    stacklevel : int
+        Passed to `warnings.warn`, so that the warning points at the caller of `solve`.
+
+    Returns
+    -------
+    Floquet or None
+        The multipliers for ``mode="full"`` on a converged nonlinear solve, else None.
+    """
+    if mode not in STABILITY_MODES:
+        raise ValueError(f"stability must be one of {STABILITY_MODES}; got {mode!r}")
+    if mode == "off" or not solution.converged or isinstance(solution.foundation,
+                                                              LinearFoundation):
+        return None
+    sleepers = float(solution.passage.wagon_length / solution.passage.sleeper_spacing)
+    if mode == "quick" and abs(sleepers - round(sleepers)) > 1e-9 * sleepers:
+        return None   # Hill's phases need H/L whole; "full" says so with an error
+    result = floquet(solution, shifts=mode == "full")
+    if not result.stable:
+        v = float(solution.passage.speed)
+        warnings.warn(UnstableSolutionWarning(
+            f"the periodic solution found at v = {v:g} m/s is unstable: a disturbance of it "
+            f"grows {abs(result.dominant):.3g}-fold per period (Floquet multiplier, "
+            f"{result.kind}), so a train does not stay on it.  Other solutions may exist at "
+            "this speed: rt.continuation finds them and rt.check_branch judges each; "
+            "solve(..., stability='off') skips this check"), stacklevel=stacklevel)
+    return result if mode == "full" else None
