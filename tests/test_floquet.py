@@ -205,3 +205,21 @@ def test_stable_to_disturbances_of_one_wagon_unstable_to_those_of_two(fold_branc
     one = rt.check_stability(solution, steps_per_period=600, **ring)
     two = rt.check_stability(solution, steps_per_period=1200, wagons=2, **ring)
     assert one.stable and not two.stable
+
+
+@pytest.mark.slow
+def test_coarse_contours_find_the_dominant_multiplier_and_24_points_find_all(fold_branch):
+    # The contour integral finds candidates, Newton refines them: with too few
+    # quadrature points a candidate can be missed.  check_branch's 16 points must
+    # give the dominant multiplier, floquet's default 24 every multiplier, as 48
+    # points do, on a sample of the fold branch from 300 to 560 m/s.
+    def key(result):
+        return sorted((round(abs(mu), 6), round(float(np.angle(mu)), 5), round(th, 6))
+                      for mu, th in zip(result.multipliers, result.phases))
+    for i in range(0, len(fold_branch), 9):
+        solution = fold_branch.solution(i)
+        fine = rt.floquet(solution, points=48)
+        assert abs(rt.floquet(solution, points=16).dominant - fine.dominant) < 1e-9
+        assert fine.theta <= np.pi and (fine.kind != "complex" or fine.dominant.imag > 0
+                                        or fine.theta > 0)
+        assert key(rt.floquet(solution)) == key(fine)

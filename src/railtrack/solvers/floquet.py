@@ -131,7 +131,7 @@ def _kind(multiplier: complex, tol: float = 1e-6) -> tuple[str, float]:
 
 def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
             min_multiplier: float = 1e-2, max_multiplier: float = 1e6,
-            points: int = 16, shifts: bool = True) -> Floquet:
+            points: int = 24, shifts: bool = True) -> Floquet:
     """The Floquet multipliers of a periodic solution and its stability, by Hill's method.
 
     Parameters
@@ -197,7 +197,12 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     period = float(passage.wagon_length / passage.speed)
     low, high = np.log(min_multiplier), np.log(max_multiplier)
     center, semi_axes = 0.5 * (low + high), (0.55 * (high - low) + 0.5, 1.5 * np.pi)
-    top = np.abs(np.arange(-m, m + 1)) > m - max(1, (2 * m + 1) // 10)
+    # A resolved exponent lives on |k| <= band (its tail above is under TAIL_LIMIT), so the
+    # contours search Hill's matrix cut to that band, about half the cost; Newton then
+    # refines every candidate with all 2m + 1 harmonics.
+    band = m - max(1, (2 * m + 1) // 10)
+    top = np.abs(np.arange(-m, m + 1)) > band
+    search = toeplitz[:, m - band:m + band + 1, m - band:m + band + 1]
     candidates, found = [], []
     for base in bases:
         phases = bloch_phases(passage, base) if shifts else np.array([float(base)])
@@ -208,13 +213,15 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
         solved = phases[phases <= np.pi + 1e-12] if mirrored else phases
 
         def matrix(z, phase=solved[:, None]):
-            return hill_matrix(passage, toeplitz, np.asarray(z) / period, phase)
+            return hill_matrix(passage, search, np.asarray(z) / period, phase)
         pairs = contour_eigenpairs(matrix, center, semi_axes, points)
         for phase, (values, vectors) in zip(solved, pairs):
             near = (np.abs(values.imag) <= np.pi + 0.5) & (values.real >= low - 0.5) \
                 & (values.real <= high + 0.5)
+            padded = np.zeros((2 * m + 1, vectors.shape[1]), dtype=complex)
+            padded[m - band:m + band + 1] = vectors
             candidates += [(z, p, phase, base, mirrored) for z, p in zip(values[near],
-                                                                         vectors.T[near])]
+                                                                         padded.T[near])]
     if candidates:
         z0, p0, phase, base, mirrored = (np.array(column) for column in zip(*candidates))
 
@@ -236,7 +243,10 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
                 found.append((np.conj(values[i]), 2 * np.pi - phase[i], tails[i], base[i]))
     found = _distinct(found)
     z = np.array([f[0] for f in found], dtype=complex)
-    order = np.argsort(-z.real, kind="stable")
+    # By decreasing |mu|; a conjugate pair (equal |mu|) lists the member with the
+    # smaller phase, then the one turning forward, first, whatever the round-off.
+    found_phases = np.array([f[1] for f in found])
+    order = np.lexsort((-z.imag, np.round(found_phases, 9), -np.round(z.real, 9)))
     z = z[order]
     phases = np.array([found[i][1] for i in order])
     tail = np.array([found[i][2] for i in order])
