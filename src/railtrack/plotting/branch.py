@@ -37,7 +37,8 @@ def ramp_on_branch(ramp, branch, samples: int = 4096) -> list[tuple[int, float] 
         at = train.replace(speed=float(speed))
         dips = []
         for guess in branch.solutions_at(float(speed)):
-            s = solve(track, at, foundation, harmonics=branch.harmonics, initial=guess)
+            s = solve(track, at, foundation, harmonics=branch.harmonics, initial=guess,
+                      stability="off")  # the branch says which are stable
             t = np.linspace(0.0, float(s.period), samples, endpoint=False)
             dips.append(float(s.sleeper_displacement(t).min()) if s.converged else np.nan)
         gaps = np.abs(np.array(dips) - low)

@@ -232,7 +232,8 @@ def _locate(branch: Branch, i: int, left, right, theta, resolution, options):
         value = a + weight * (b - a)
         guess = (1 - weight) * ca + weight * cb
         problem = replaced(branch.track, branch.train, branch.foundation, branch.parameter, value)
-        trial = solve(*problem, harmonics=branch.harmonics, initial=guess, method="newton")
+        trial = solve(*problem, harmonics=branch.harmonics, initial=guess, method="newton",
+                      stability="off")  # judged just below
         if not trial.converged:
             break
         result = floquet(trial, theta, **options)

@@ -249,7 +249,8 @@ def _trace(track, train, foundation, parameter, start, stop, step, bounds, max_p
 
 
         first = solve(*replaced(track, train, foundation, parameter, start), harmonics,
-                      method="newton", tol=tol, samples=samples, initial=initial)
+                      method="newton", tol=tol, samples=samples, initial=initial,
+                      stability="off")  # a branch has stable and unstable points alike
     c = first.coefficients[harmonics:]
     x_scale = float(np.linalg.norm(to_real(c))) or 1.0
     problem = _Problem(track, train, foundation, parameter, harmonics, first.samples,
