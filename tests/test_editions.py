@@ -141,7 +141,8 @@ SKIPPABLE = re.compile(r"^```\{admonition\} Check: skip on a first reading\n:cla
 SKIPPABLE_SECTIONS = {
     "05_semi_analytical_method": ["How fast the iteration converges"],
     "10_train_speeds_up": ["A time-domain check",
-                           "The linear law's second peak, and what the folds sit on"],
+                           "The linear law's second peak, and what the folds sit on",
+                           "Hill's matrix, derived", "A third method: the ring linearised"],
     "11_verification": ["Mesh and time-step convergence"],
     "12_conclusions": ["Misprints"],
 }

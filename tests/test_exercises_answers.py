@@ -219,6 +219,12 @@ ANSWERS = {
         ("the band's width", r"band ([\d.]+)", "bare", 0.00005, r"band|wide|width|quantile"),
         ("correlation of the load with k2", r"load (-[\d.]+)", "bare", 0.005, r"correlat"),
     ],
+    "10.3": [
+        ("the deciding disturbance's length", r"([\d.]+) wagons long", "bare", 0.05,
+         r"wagons? long"),
+        ("largest multiplier of the part-2 solution, any wavelength",
+         r"0\.8\d; any wavelength: (1\.\d+)", "bare", 0.005, r"abs\(μ\)|multiplier|\|\\mu\|"),
+    ],
     "11.1": [
         ("error at 600 steps per period", r"600 steps per period: error (\S+) mm", "mm", 0.005e-5),
         ("error at 300 steps per period", r"300 steps per period: measured (\S+) mm", "mm",

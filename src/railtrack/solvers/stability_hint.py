@@ -31,6 +31,8 @@ from .solution import Solution
 __all__ = ["UnstableSolutionWarning", "STABILITY_MODES", "judge_stability"]
 
 STABILITY_MODES = ("quick", "full", "off")
+KINDS = {"real +": "a real positive one", "real -": "a real negative one",
+         "complex": "a complex pair"}
 
 
 class UnstableSolutionWarning(UserWarning):
@@ -65,8 +67,8 @@ def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floqu
         v = float(solution.passage.speed)
         warnings.warn(UnstableSolutionWarning(
             f"the periodic solution found at v = {v:g} m/s is unstable: a disturbance of it "
-            f"grows {abs(result.dominant):.3g}-fold per period (Floquet multiplier, "
-            f"{result.kind}), so a train does not stay on it.  Other solutions may exist at "
+            f"grows {abs(result.dominant):.3f}-fold per period ({KINDS[result.kind]} of "
+            "Floquet multipliers), so a train does not stay on it.  Other solutions may exist at "
             "this speed: rt.continuation finds them and rt.check_branch judges each; "
             "solve(..., stability='off') skips this check"), stacklevel=stacklevel)
     return result if mode == "full" else None
