@@ -41,6 +41,8 @@ __all__ = ["Floquet", "floquet", "TAIL_LIMIT"]
 
 TAIL_LIMIT = 0.05
 """Largest share of an eigenvector's norm on the top fifth of the harmonics for a resolved exponent."""
+MEMORY_BYTES = 256 * 2**20
+"""Most memory one stack of Hill's matrices may take (phases are solved in groups) [bytes]."""
 EDGE = 1e-6
 """Tolerance on |Im lambda T| <= pi at the edges of the strip [rad]."""
 RESIDUAL_LIMIT = 1e-6
@@ -212,9 +214,14 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
                                                       2 * np.pi) - np.pi), axis=1) < 1e-9))
         solved = phases[phases <= np.pi + 1e-12] if mirrored else phases
 
-        def matrix(z, phase=solved[:, None]):
-            return hill_matrix(passage, search, np.asarray(z) / period, phase)
-        pairs = contour_eigenpairs(matrix, center, semi_axes, points)
+        # Phases in groups whose stack of matrices stays under MEMORY_BYTES.
+        size = 16 * points * search.shape[-1] ** 2 * 4   # the stack and its working copies
+        group = max(1, int(MEMORY_BYTES // size))
+        pairs = []
+        for start in range(0, solved.size, group):
+            def matrix(z, phase=solved[start:start + group, None]):
+                return hill_matrix(passage, search, np.asarray(z) / period, phase)
+            pairs += contour_eigenpairs(matrix, center, semi_axes, points)
         for phase, (values, vectors) in zip(solved, pairs):
             near = (np.abs(values.imag) <= np.pi + 0.5) & (values.real >= low - 0.5) \
                 & (values.real <= high + 0.5)
@@ -230,7 +237,20 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
 
         def slope(z, p, rows):
             return hill_derivative(passage, toeplitz, z / period, phase[rows], p) / period
-        values, vectors, residuals = polish(matrix, z0, p0, slope)
+        # Newton on the candidates in groups, so that the bordered matrices stay under
+        # MEMORY_BYTES; each candidate's iteration is its own, so grouping changes nothing.
+        chunk = max(1, int(MEMORY_BYTES // (16 * 4 * (2 * m + 2) ** 2)))
+        parts = []
+        for start in range(0, z0.size, chunk):
+            rows = np.arange(start, min(start + chunk, z0.size))
+
+            def local(z, which, rows=rows):
+                return matrix(z, rows[which])
+
+            def local_slope(z, p, which, rows=rows):
+                return slope(z, p, rows[which])
+            parts.append(polish(local, z0[rows], p0[rows], local_slope))
+        values, vectors, residuals = (np.concatenate(part) for part in zip(*parts))
         # A real negative multiplier sits on the strip's edge, Im z = +-pi, where
         # round-off decides the side: accept both edges, fold them onto (-pi, pi].
         inside = (np.abs(values.imag) <= np.pi + EDGE) & (values.real >= low) \

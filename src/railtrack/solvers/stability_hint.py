@@ -8,7 +8,7 @@ nonlinear law, `judge_stability` looks at the Floquet multipliers
 
 * ``"quick"`` (the default of `solve`): the strip of one Bloch phase only,
   the disturbances that repeat every sleeper, about twice the cost of the
-  solve.  It warns when it finds a multiplier outside the unit circle; when
+  solve; skipped above m = 100 harmonics, where it would cost far more.  It warns when it finds a multiplier outside the unit circle; when
   it finds none it proves nothing, since the other 29 phases of a 30-sleeper
   wagon are not looked at.
 * ``"full"``: `rt.floquet` with its defaults (every disturbance that repeats
@@ -31,6 +31,8 @@ from .solution import Solution
 __all__ = ["UnstableSolutionWarning", "STABILITY_MODES", "judge_stability"]
 
 STABILITY_MODES = ("quick", "full", "off")
+QUICK_HARMONICS = 100
+"""Above this m the quick look (its cost grows as m^3, the solve's as m^2) is skipped."""
 KINDS = {"real +": "a real positive one", "real -": "a real negative one",
          "complex": "a complex pair"}
 
@@ -62,6 +64,8 @@ def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floqu
     sleepers = float(solution.passage.wagon_length / solution.passage.sleeper_spacing)
     if mode == "quick" and abs(sleepers - round(sleepers)) > 1e-9 * sleepers:
         return None   # Hill's phases need H/L whole; "full" says so with an error
+    if mode == "quick" and solution.harmonics > QUICK_HARMONICS:
+        return None   # the look would cost far more than the solve
     result = floquet(solution, shifts=mode == "full")
     if not result.stable:
         v = float(solution.passage.speed)
