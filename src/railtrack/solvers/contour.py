@@ -26,7 +26,7 @@ import numpy as np
 __all__ = ["contour_eigenpairs", "polish"]
 
 RANK_TOLERANCE = 1e-9
-"""Singular values of A_0 below this fraction of the largest are quadrature noise."""
+"""Singular values of A_0 below this fraction of the integrand's largest entry are noise."""
 
 
 def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: complex,
@@ -80,8 +80,10 @@ def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: compl
         first = np.einsum("k,bkij->bij", weights, solved)
         second = np.einsum("k,bkij->bij", weights * z, solved)
         u, sigma, wh = np.linalg.svd(first, full_matrices=False)
-        floor = RANK_TOLERANCE * sigma[:, :1]
-        ranks = np.sum((sigma > floor) & (sigma[:, :1] > 0), axis=1)
+        # Against the integrand's own size, not A_0's: with no eigenvalue inside,
+        # A_0 is quadrature noise and all of it must count as rank 0.
+        scale = np.max(np.abs(solved), axis=(1, 2, 3))[:, None]
+        ranks = np.sum(sigma > RANK_TOLERANCE * scale, axis=1)
         if np.all(ranks < columns) or columns == n:
             break
         columns = min(2 * columns, n)
@@ -99,7 +101,7 @@ def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: compl
 
 def polish(matrix: Callable[[np.ndarray], np.ndarray], values: np.ndarray, vectors: np.ndarray,
            derivative: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None,
-           iterations: int = 6, tol: float = 1e-12, step: float = 1e-6
+           iterations: int = 6, tol: float = 1e-10, step: float = 1e-6
            ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Newton's method on T(z) p = 0, u^* p = 1, from approximate eigenpairs, all at once.
 
