@@ -102,17 +102,36 @@ def test_the_ring_sample_finds_the_torus_on_the_last_part(by_ring):
 def test_hill_lists_the_folds_and_the_tori(by_hill, fold_branch):
     changes = by_hill.changes
     folds = [c for c in changes if c.kind == "fold"]
-    np.testing.assert_allclose([c.value for c in folds], fold_branch.fold_values, atol=1e-12)
-    # a saddle-node fold: stable -> unstable on the way in, back on the way out
-    assert [c.gains for c in folds] == [False, True, False, True]
+    # three folds change stability; at the last one (513.1 m/s) a complex pair is
+    # still outside on the part it leads to, and stability comes back 0.2 m/s later
+    np.testing.assert_allclose([c.value for c in folds], fold_branch.fold_values[:3],
+                               atol=1e-12)
+    assert [c.gains for c in folds] == [False, True, False]
     tori = [c for c in changes if c.kind == "complex"]
-    # two on the part between the second and the third fold, one on the last part,
-    # which the ring's sample put between 587.9 and 596.3 m/s
-    assert len(tori) == 3 and len(changes) == 7
+    assert len(tori) == 4 and len(changes) == 7
+    after_fold = tori[2]
+    assert fold_branch.fold_values[3] < after_fold.value < fold_branch.fold_values[3] + 0.3
+    assert after_fold.gains and abs(after_fold.theta - 2 * np.pi / 30) < 1e-9
+    # the ring's sample put the last one between 587.9 and 596.3 m/s
     assert 587.9 < tori[-1].value < 596.3 and not tori[-1].gains
     assert all(0 < c.frequency < 0.5 for c in tori)
     assert by_hill.stable[0] and not by_hill.stable[-1]
     assert np.array_equal(by_hill.stable, np.abs(by_hill.multipliers) < 1)
+
+
+@pytest.mark.slow
+def test_past_the_last_fold_stability_returns_where_check_branch_says(by_hill):
+    # Independent check by the linearised ring: on the part that leaves the last
+    # fold, a tenth of a metre per second either side of the located change.
+    change = [c for c in by_hill.changes if c.kind == "complex"][2]
+    after = change.index + 1          # the first point of the part past the fold
+    for offset, inside in ((-0.1, False), (0.1, True)):
+        solution = rt.solve(FOLD_TRACK, rt.Train.paper(speed=change.value + offset), FOLD_LAW,
+                            harmonics=25, initial=by_hill.coefficients[after],
+                            stability="off")
+        ring = [abs(rt.ring_multipliers(solution, steps_per_period=steps).dominant)
+                for steps in (1200, 2400)]
+        assert ((4 * ring[1] - ring[0]) / 3 < 1) == inside
 
 
 @pytest.mark.slow

@@ -144,16 +144,20 @@ def plot_multipliers(branch, *, scanned=None) -> Figure:
                     label="dominant |μ|, disturbances of any wavelength", gid="scanned")
     ax.axhline(1.0, color=BLACK, lw=0.8, gid="unit-circle")
     names = {"real +": "real, +1", "real -": "real, −1", "complex": "complex pair"}
+    labelled = set()
     for change in branch.changes:
-        i = change.index
-        y = np.interp(change.value, branch.values[i:i + 2], size[i:i + 2])
-        y = 1.0 if change.kind == "fold" else y
+        # every change sits on the unit circle, by definition; the points either
+        # side are a step of the branch away
         fold = change.kind == "fold"
-        ax.plot(change.value, y, "D" if fold else "s", color=BLACK if fold else VERMILLION,
-                mfc=BLACK if fold else "none", ms=5, gid="change")
+        label = "folds (a real multiplier through +1)" if fold else \
+            "changes away from folds"
+        ax.plot(change.value, 1.0, "D" if fold else "s", color=BLACK if fold else VERMILLION,
+                mfc=BLACK if fold else "none", ms=5, gid="change",
+                label=None if label in labelled else label)
+        labelled.add(label)
         if not fold:
-            ax.annotate(f"{names[change.kind]}, {change.value:.1f} m/s", (change.value, y),
-                        fontsize=7, xytext=(4, -10 if change.gains else 6),
+            ax.annotate(f"{names[change.kind]}, {change.value:.1f} m/s", (change.value, 1.0),
+                        fontsize=7, xytext=(4, -12 if change.gains else 6),
                         textcoords="offset points")
     ax.set_xlabel("train speed v [m/s]")
     ax.set_ylabel("largest Floquet multiplier |μ| per period [-]")

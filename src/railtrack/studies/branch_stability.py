@@ -39,6 +39,8 @@ from .stability import check_stability
 __all__ = ["segments", "check_branch", "METHODS"]
 
 METHODS = ("floquet", "time-domain")
+FOLD_STEP = 0.02
+"""Where a point just past a fold is solved, as a fraction of the way to the next point [-]."""
 VERDICT_POINTS = 16
 """Contour points per phase for the verdicts of `check_branch` (see `_floquet_branch`)."""
 
@@ -199,15 +201,25 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
     dominant = np.array([checks[i].dominant for i in range(len(branch))])
     folds = {fold.index: fold for fold in branch.folds}
     changes = []
+    values = np.asarray(branch.values, dtype=float)
     for i in np.flatnonzero(stable[:-1] != stable[1:]):
         i = int(i)
-        unstable = checks[i] if not stable[i] else checks[i + 1]
+        ends = [(values[k], branch.coefficients[k], checks[k]) for k in (i, i + 1)]
+        kind = None
         if i in folds:
-            kind, value = "fold", folds[i].value
-            frequency, phase = 0.0, 0.0
-        else:
-            value, unstable = _locate(branch, i, checks[i], checks[i + 1], theta, resolution,
-                                      options)
+            # At the fold a real multiplier passes +1; stability changes there unless
+            # another multiplier is still outside on the stable side.  A point just
+            # past the fold on that side tells.
+            steady = i if stable[i] else i + 1
+            near = folds[i].value + FOLD_STEP * (values[steady] - folds[i].value)
+            trial = _solved(branch, near, branch.coefficients[steady])
+            if trial is None or floquet(trial, theta, **options).stable:
+                kind, value, frequency, phase = "fold", folds[i].value, 0.0, 0.0
+            else:
+                ends[1 - (steady - i)] = (near, trial.coefficients[branch.harmonics:],
+                                          floquet(trial, theta, **options))
+        if kind is None:
+            value, unstable = _locate(branch, ends, theta, resolution, options)
             kind, frequency, phase = unstable.kind, unstable.frequency, unstable.theta
         changes.append(StabilityChange(float(value), i, kind, float(frequency), float(phase),
                                        bool(stable[i + 1])))
@@ -215,26 +227,31 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
                                changes=tuple(changes))
 
 
-def _locate(branch: Branch, i: int, left, right, theta, resolution, options):
-    """The parameter between points i and i + 1 where |dominant multiplier| = 1.
+def _solved(branch: Branch, value: float, guess: np.ndarray):
+    """The branch's problem solved at parameter `value` from `guess`, or None."""
+    problem = replaced(branch.track, branch.train, branch.foundation, branch.parameter, value)
+    trial = solve(*problem, harmonics=branch.harmonics, initial=guess, method="newton",
+                  stability="off")  # judged by the caller
+    return trial if trial.converged else None
 
+
+def _locate(branch: Branch, ends, theta, resolution, options):
+    """The parameter between two solved points where |dominant multiplier| = 1.
+
+    `ends` holds (parameter, one-sided coefficients, `Floquet`) of each end.
     Regula falsi on log|mu| against the parameter, each trial point solved
-    from the coefficients interpolated between the two points.  Returns the
+    from the coefficients interpolated between the two ends.  Returns the
     value and the `Floquet` of the nearest unstable trial.
     """
-    values = np.asarray(branch.values, dtype=float)
-    (a, b), (fa, fb) = values[i:i + 2], (np.log(abs(left.dominant)), np.log(abs(right.dominant)))
-    ca, cb = branch.coefficients[i], branch.coefficients[i + 1]
+    (a, ca, left), (b, cb, right) = ends
+    fa, fb = np.log(abs(left.dominant)), np.log(abs(right.dominant))
     unstable = left if fa > 0 else right
     tol = 1e-4 * max(abs(a), abs(b)) if resolution is None else float(resolution)
     while abs(b - a) > tol:
         weight = float(np.clip(fa / (fa - fb), 0.1, 0.9))
         value = a + weight * (b - a)
-        guess = (1 - weight) * ca + weight * cb
-        problem = replaced(branch.track, branch.train, branch.foundation, branch.parameter, value)
-        trial = solve(*problem, harmonics=branch.harmonics, initial=guess, method="newton",
-                      stability="off")  # judged just below
-        if not trial.converged:
+        trial = _solved(branch, value, (1 - weight) * ca + weight * cb)
+        if trial is None:
             break
         result = floquet(trial, theta, **options)
         f = np.log(abs(result.dominant))
