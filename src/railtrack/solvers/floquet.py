@@ -72,7 +72,8 @@ class Floquet:
     kind : {"real +", "real -", "complex", "none"}
         The dominant multiplier: real and positive (through +1: a fold, or a
         branch point), real and negative (through -1: period doubling), or
-        one of a complex pair (Neimark–Sacker: a quasi-periodic response).
+        one of a complex pair (Neimark–Sacker: a quasi-periodic response if the
+        crossing is supercritical).
     frequency : float
         arg(dominant) / 2 pi, the disturbance's frequency in the frame of the
         train as a fraction of v / H, in [0, 0.5] [-].
