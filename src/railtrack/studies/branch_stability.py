@@ -213,11 +213,11 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
             steady = i if stable[i] else i + 1
             near = folds[i].value + FOLD_STEP * (values[steady] - folds[i].value)
             trial = _solved(branch, near, branch.coefficients[steady])
-            if trial is None or floquet(trial, theta, **options).stable:
+            past = None if trial is None else floquet(trial, theta, **options)
+            if past is None or past.stable:
                 kind, value, frequency, phase = "fold", folds[i].value, 0.0, 0.0
             else:
-                ends[1 - (steady - i)] = (near, trial.coefficients[branch.harmonics:],
-                                          floquet(trial, theta, **options))
+                ends[1 - (steady - i)] = (near, trial.coefficients[branch.harmonics:], past)
         if kind is None:
             value, unstable = _locate(branch, ends, theta, resolution, options)
             kind, frequency, phase = unstable.kind, unstable.frequency, unstable.theta
