@@ -46,10 +46,32 @@ from .cell_receptance import cell_receptance_modes
 from .load import axle_factor
 from .receptance import receptance_factors
 
-__all__ = ["LinearCell", "cell_linear_coefficients"]
+__all__ = ["LinearCell", "cell_linear_coefficients", "sleeper_array", "cell_size"]
 
 _UNITS = {"sleeper_mass": "kg", "pad_stiffness": "N/m", "pad_damping": "N s/m",
           "stiffness": "N/m", "damping": "N s/m"}
+
+
+def sleeper_array(name: str, value, unit: str) -> np.ndarray:
+    """`value` as a read-only 1-D float array, one entry per sleeper of a cell.
+
+    Dampings (a `name` containing "damping") may be zero, the rest must be
+    positive; every entry finite.  A ValueError names the field otherwise.
+    """
+    (require_non_negative if "damping" in name else require_positive)(name, value, unit)
+    array = np.array(value, dtype=np.float64)
+    if array.ndim != 1 or array.size == 0:
+        raise ValueError(f"{name} must be a non-empty 1-D sequence, one value per "
+                         f"sleeper of the cell; got shape {array.shape}")
+    array.setflags(write=False)
+    return array
+
+
+def cell_size(sleepers) -> int:
+    """N, the sleepers of a cell, as an int >= 1, or a ValueError."""
+    if isinstance(sleepers, bool) or int(sleepers) != sleepers or sleepers < 1:
+        raise ValueError(f"sleepers must be an integer >= 1; got {sleepers!r}")
+    return int(sleepers)
 
 
 @dataclass(frozen=True)
@@ -92,14 +114,7 @@ class LinearCell:
         lengths = {}
         for field in fields(self):
             name = field.name
-            value = getattr(self, name)
-            (require_non_negative if "damping" in name else require_positive)(
-                name, value, _UNITS[name])
-            array = np.array(value, dtype=np.float64)
-            if array.ndim != 1 or array.size == 0:
-                raise ValueError(f"{name} must be a non-empty 1-D sequence, one value per "
-                                 f"sleeper of the cell; got shape {array.shape}")
-            array.setflags(write=False)
+            array = sleeper_array(name, getattr(self, name), _UNITS[name])
             object.__setattr__(self, name, array)
             lengths[name] = array.size
         if len(set(lengths.values())) != 1:
@@ -114,9 +129,7 @@ class LinearCell:
     @classmethod
     def identical(cls, passage: Passage, foundation, sleepers: int) -> "LinearCell":
         """N copies of the passage's sleeper and pad on `foundation` (a LinearFoundation)."""
-        if isinstance(sleepers, bool) or int(sleepers) != sleepers or sleepers < 1:
-            raise ValueError(f"sleepers must be an integer >= 1; got {sleepers!r}")
-        n = int(sleepers)
+        n = cell_size(sleepers)
         return cls(*(np.full(n, float(value)) for value in (
             passage.sleeper_mass, passage.pad_stiffness, passage.pad_damping,
             foundation.stiffness, foundation.damping)))

@@ -31,6 +31,7 @@ from ..equations.cell_harmonic_balance import (
     two_sided_norm,
     unpack_harmonics,
 )
+from ..equations.cell_linear import cell_size, sleeper_array
 from ..equations.harmonic_balance import (
     NonFiniteForceError,
     default_samples,
@@ -38,7 +39,6 @@ from ..equations.harmonic_balance import (
 )
 from ..model.foundations import as_foundation
 from ..model.passage import Passage
-from ..model.track import require_non_negative, require_positive
 from .foundation_at_rest import static_deflection
 
 __all__ = ["SleeperCell", "CellSolution", "solve_cell"]
@@ -72,14 +72,7 @@ class SleeperCell:
     def __post_init__(self) -> None:
         for name, unit in (("sleeper_mass", "kg"), ("pad_stiffness", "N/m"),
                            ("pad_damping", "N s/m")):
-            value = getattr(self, name)
-            (require_non_negative if name == "pad_damping" else require_positive)(name, value, unit)
-            array = np.array(value, dtype=float)
-            if array.ndim != 1 or array.size == 0:
-                raise ValueError(f"{name} must be a non-empty 1-D sequence, one value per "
-                                 f"sleeper; got shape {array.shape}")
-            array.setflags(write=False)
-            object.__setattr__(self, name, array)
+            object.__setattr__(self, name, sleeper_array(name, getattr(self, name), unit))
         object.__setattr__(self, "foundations", tuple(as_foundation(f) for f in self.foundations))
         lengths = {f.name: len(getattr(self, f.name)) for f in fields(self)}
         if len(set(lengths.values())) != 1:
@@ -94,9 +87,7 @@ class SleeperCell:
     @classmethod
     def identical(cls, passage: Passage, foundation, sleepers: int) -> "SleeperCell":
         """N copies of the passage's sleeper and pad on one law."""
-        if isinstance(sleepers, bool) or int(sleepers) != sleepers or sleepers < 1:
-            raise ValueError(f"sleepers must be an integer >= 1; got {sleepers!r}")
-        n = int(sleepers)
+        n = cell_size(sleepers)
         return cls(*(np.full(n, float(value)) for value in (
             passage.sleeper_mass, passage.pad_stiffness, passage.pad_damping)),
             (as_foundation(foundation),) * n)
