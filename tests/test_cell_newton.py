@@ -23,9 +23,10 @@ from railtrack.equations.cell_harmonic_balance import (
     pack_harmonics,
 )
 from railtrack.equations.cell_linear import LinearCell, cell_linear_coefficients
+from railtrack.model.cell import SleeperCell
 from railtrack.model.foundations import BilinearFoundation, CubicFoundation, LinearFoundation
 from railtrack.model.passage import Passage
-from railtrack.solvers.cell_newton import SleeperCell, solve_cell
+from railtrack.solvers.cell_newton import solve_cell
 
 TRACK, TRAIN = rt.Track.paper(), rt.Train.paper()
 PAPER = Passage(TRACK, TRAIN)

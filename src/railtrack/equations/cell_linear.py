@@ -40,38 +40,16 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
+from ..model.cell import cell_size, sleeper_array
 from ..model.passage import Passage
-from ..model.track import require_non_negative, require_positive
 from .cell_receptance import cell_receptance_modes
 from .load import axle_factor
 from .receptance import receptance_factors
 
-__all__ = ["LinearCell", "cell_linear_coefficients", "sleeper_array", "cell_size"]
+__all__ = ["LinearCell", "cell_linear_coefficients"]
 
 _UNITS = {"sleeper_mass": "kg", "pad_stiffness": "N/m", "pad_damping": "N s/m",
           "stiffness": "N/m", "damping": "N s/m"}
-
-
-def sleeper_array(name: str, value, unit: str) -> np.ndarray:
-    """`value` as a read-only 1-D float array, one entry per sleeper of a cell.
-
-    Dampings (a `name` containing "damping") may be zero, the rest must be
-    positive; every entry finite.  A ValueError names the field otherwise.
-    """
-    (require_non_negative if "damping" in name else require_positive)(name, value, unit)
-    array = np.array(value, dtype=np.float64)
-    if array.ndim != 1 or array.size == 0:
-        raise ValueError(f"{name} must be a non-empty 1-D sequence, one value per "
-                         f"sleeper of the cell; got shape {array.shape}")
-    array.setflags(write=False)
-    return array
-
-
-def cell_size(sleepers) -> int:
-    """N, the sleepers of a cell, as an int >= 1, or a ValueError."""
-    if isinstance(sleepers, bool) or int(sleepers) != sleepers or sleepers < 1:
-        raise ValueError(f"sleepers must be an integer >= 1; got {sleepers!r}")
-    return int(sleepers)
 
 
 @dataclass(frozen=True)

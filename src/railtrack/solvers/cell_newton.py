@@ -19,7 +19,7 @@ damping force switched on at contact) defeats it: use a continuous one.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -31,81 +31,16 @@ from ..equations.cell_harmonic_balance import (
     two_sided_norm,
     unpack_harmonics,
 )
-from ..equations.cell_linear import cell_size, sleeper_array
 from ..equations.harmonic_balance import (
     NonFiniteForceError,
     default_samples,
     require_jacobian_samples,
 )
-from ..model.foundations import as_foundation
+from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from .foundation_at_rest import static_deflection
 
-__all__ = ["SleeperCell", "CellSolution", "solve_cell"]
-
-
-@dataclass(frozen=True)
-class SleeperCell:
-    """The N sleepers of a repeating cell: mass, pad and foundation law of each.
-
-    Parameters
-    ----------
-    sleeper_mass, pad_stiffness, pad_damping : sequence of float, length N
-        M_j > 0 [kg], k1_j > 0 [N/m], eta1_j >= 0 [N s/m].
-    foundations : sequence of laws, length N
-        Any foundation object of `railtrack.model.foundations` or a callable
-        ``f(w, v)`` [N] (w positive upward, f < 0 in compression).
-
-    Examples
-    --------
-    >>> from railtrack.model.foundations import CubicFoundation, LinearFoundation
-    >>> cell = SleeperCell.identical(Passage.paper(), CubicFoundation.paper(), 3)
-    >>> cell.with_sleeper(1, foundation=LinearFoundation(10e6)).sleepers
-    3
-    """
-
-    sleeper_mass: np.ndarray
-    pad_stiffness: np.ndarray
-    pad_damping: np.ndarray
-    foundations: tuple
-
-    def __post_init__(self) -> None:
-        for name, unit in (("sleeper_mass", "kg"), ("pad_stiffness", "N/m"),
-                           ("pad_damping", "N s/m")):
-            object.__setattr__(self, name, sleeper_array(name, getattr(self, name), unit))
-        object.__setattr__(self, "foundations", tuple(as_foundation(f) for f in self.foundations))
-        lengths = {f.name: len(getattr(self, f.name)) for f in fields(self)}
-        if len(set(lengths.values())) != 1:
-            raise ValueError(f"a SleeperCell needs one value per sleeper in every field; "
-                             f"got lengths {lengths}")
-
-    @property
-    def sleepers(self) -> int:
-        """N, the number of sleepers in the cell."""
-        return int(self.sleeper_mass.size)
-
-    @classmethod
-    def identical(cls, passage: Passage, foundation, sleepers: int) -> "SleeperCell":
-        """N copies of the passage's sleeper and pad on one law."""
-        n = cell_size(sleepers)
-        return cls(*(np.full(n, float(value)) for value in (
-            passage.sleeper_mass, passage.pad_stiffness, passage.pad_damping)),
-            (as_foundation(foundation),) * n)
-
-    def with_sleeper(self, index: int, *, foundation=None, **changes: float) -> "SleeperCell":
-        """A copy with sleeper `index` changed: its ``foundation`` law and/or mass, pad fields."""
-        known = ("sleeper_mass", "pad_stiffness", "pad_damping")
-        unknown = set(changes) - set(known)
-        if unknown:
-            raise TypeError(f"no field named {sorted(unknown)} in SleeperCell; fields: "
-                            f"{list(known)} and foundation")
-        values = {name: getattr(self, name).copy() for name in known}
-        for name, value in changes.items():
-            values[name][index] = value
-        laws = list(self.foundations)
-        if foundation is not None:
-            laws[index] = as_foundation(foundation)
-        return replace(self, foundations=tuple(laws), **values)
+__all__ = ["CellSolution", "solve_cell"]
 
 
 @dataclass(frozen=True)
