@@ -27,6 +27,7 @@ from railtrack.model.cell import SleeperCell
 from railtrack.model.foundations import BilinearFoundation, CubicFoundation, LinearFoundation
 from railtrack.model.passage import Passage
 from railtrack.solvers.cell_newton import solve_cell
+from railtrack.solvers.cell_step import newton_step
 
 TRACK, TRAIN = rt.Track.paper(), rt.Train.paper()
 PAPER = Passage(TRACK, TRAIN)
@@ -130,6 +131,26 @@ def test_jacobian_is_the_derivative_of_the_residual():
             columns.append(pack_harmonics(cell_residual(cell, trial.T, ops, samples)[0]))
         numeric[:, i] = (columns[0] - columns[1]) / (2 * h)
     np.testing.assert_allclose(jacobian, numeric, rtol=0, atol=1e-6 * np.abs(jacobian).max())
+
+
+@pytest.mark.parametrize("nonlinear", [(), (2,), (0, 3), (0, 1, 2, 3, 4)])
+def test_structured_step_is_the_dense_newton_step(nonlinear):
+    """Woodbury on the varying sleepers (cell_step) against the dense Jacobian (cell_jacobian)."""
+    n, m, samples = 5, 8, 64
+    linear = random_linear_cell(n, seed=4)
+    laws = [CubicFoundation(k, 2e13, 0.8, d) if j in nonlinear else LinearFoundation(k, d)
+            for j, (k, d) in enumerate(zip(linear.stiffness, linear.damping))]
+    cell = SleeperCell(linear.sleeper_mass, linear.pad_stiffness, linear.pad_damping, laws)
+    omega = PAPER.fundamental_frequency * np.arange(m + 1)
+    ops = cell_operators(PAPER, cell.pad_stiffness, cell.pad_damping, omega)
+    rng = np.random.default_rng(6)
+    c = 1e-3 * (rng.normal(size=(n, m + 1)) + 1j * rng.normal(size=(n, m + 1)))
+    c[:, 0] = c[:, 0].real
+    residual = cell_residual(cell, c, ops, samples)[0]
+    dense = np.linalg.solve(cell_jacobian(cell, c, ops, samples), -pack_harmonics(residual))
+    step = newton_step(cell, c, residual, ops, samples)
+    np.testing.assert_allclose(pack_harmonics(step.T), dense, rtol=0,
+                               atol=1e-10 * np.abs(dense).max())
 
 
 @pytest.mark.parametrize("passage", [PAPER, Passage.paper(speed=80.0)])

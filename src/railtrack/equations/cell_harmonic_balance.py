@@ -46,7 +46,8 @@ from .load import axle_factor
 from .receptance import receptance_factors
 
 __all__ = ["CellOperators", "cell_operators", "cell_force_jacobian", "cell_residual",
-           "cell_jacobian", "pack_harmonics", "unpack_harmonics", "two_sided_norm"]
+           "cell_jacobian", "tangent_spectrum", "pack_harmonics", "unpack_harmonics",
+           "two_sided_norm"]
 
 
 class CellOperators(NamedTuple):
@@ -211,6 +212,23 @@ def cell_residual(cell, coefficients: np.ndarray, ops: CellOperators, samples: i
     return res, force
 
 
+def tangent_spectrum(cell, coefficients: np.ndarray, ops: CellOperators, samples: int):
+    """Each sleeper's tangent (df/dw, df/dw') along its orbit: harmonics and samples.
+
+    Returns
+    -------
+    harmonics : ndarray, shape (2, N, 4m+1)
+        K_l [N/m] and C_l [N s/m], l = -2m..2m at index l + 2m.
+    sampled : ndarray, shape (2, N, samples)
+        The tangent at the AFT samples.
+    """
+    m = ops.omega.size - 1
+    w, v = _synthesize(coefficients, ops.omega, samples)
+    sampled = _forces(cell, w, v, tangent=True)
+    spectrum = np.fft.rfft(sampled, axis=-1)[..., :2 * m + 1] / samples
+    return np.concatenate([np.conj(spectrum[..., :0:-1]), spectrum], axis=-1), sampled
+
+
 def cell_jacobian(cell, coefficients: np.ndarray, ops: CellOperators,
                   samples: int) -> np.ndarray:
     """Exact Jacobian of `pack_harmonics(R)` with respect to `pack_harmonics(c.T)` [N/m].
@@ -223,9 +241,7 @@ def cell_jacobian(cell, coefficients: np.ndarray, ops: CellOperators,
     it is a generalised (one-sided or central-difference) Jacobian.
     """
     m, n = ops.omega.size - 1, len(cell.foundations)
-    w, v = _synthesize(coefficients, ops.omega, samples)
-    spectrum = np.fft.rfft(_forces(cell, w, v, tangent=True), axis=-1)[..., :2 * m + 1] / samples
-    full = np.concatenate([np.conj(spectrum[..., :0:-1]), spectrum], axis=-1)
+    full, _ = tangent_spectrum(cell, coefficients, ops, samples)
     direct, conjugate = cell_force_jacobian(full[0], full[1], ops.omega)
     by_direct = np.einsum("nab,bnk->nakb", ops.second, direct)
     by_conj = np.einsum("nab,bnk->nakb", ops.second, conjugate)

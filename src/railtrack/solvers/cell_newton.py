@@ -8,11 +8,10 @@ foundation force by AFT.  The unknowns are packed real,
 the residual, ``[R_0, Re R_{1..m}, Im R_{1..m}]``: R_0 is real for a real mean
 c_{.,0}, so the system is square.  Its exact Jacobian is
 ``K1_n + K2_n dp_n/dc``, where dp/dc is block-diagonal over the sleepers (each
-law's AFT Jacobian plus M_j s^2, `cell_force_jacobian`).  The step is a
-dense solve, O((N (2m+1))^3): measured on one core for a cubic cell with
-one soft sleeper (4 steps), 0.09 s for N = 30, m = 15, 0.35 s for m = 25 and
-1.4 s for m = 40 (0.34 s a step); N = 1 and N = 10 at m = 15 take 2 and
-11 ms.  A backtracking line search on the residual norm keeps it robust; the
+law's AFT Jacobian plus M_j s^2, `cell_force_jacobian`).  The step uses
+that structure (`railtrack.solvers.cell_step`): m + 1 solves of N x N plus one
+system the size of the nonlinear sleepers' unknowns, the exact Newton step.
+A backtracking line search on the residual norm keeps it robust; the
 result says honestly whether it converged.  A law whose force jumps (a
 damping force switched on at contact) defeats it: use a continuous one.
 """
@@ -23,14 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..equations.cell_harmonic_balance import (
-    cell_jacobian,
-    cell_operators,
-    cell_residual,
-    pack_harmonics,
-    two_sided_norm,
-    unpack_harmonics,
-)
+from ..equations.cell_harmonic_balance import cell_operators, cell_residual, two_sided_norm
 from ..equations.harmonic_balance import (
     NonFiniteForceError,
     default_samples,
@@ -38,6 +30,7 @@ from ..equations.harmonic_balance import (
 )
 from ..model.cell import SleeperCell
 from ..model.passage import Passage
+from .cell_step import newton_step
 from .foundation_at_rest import static_deflection
 
 __all__ = ["CellSolution", "solve_cell"]
@@ -171,15 +164,14 @@ def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: floa
     history, steps, message = [norm], 0, ""
     while norm > tol and steps < max_iterations:
         steps += 1
-        jacobian = cell_jacobian(cell, c, ops, samples)
-        if not np.all(np.isfinite(jacobian)):
-            message = f"the Jacobian is not finite at Newton step {steps}"
-            break
         try:
-            step = np.linalg.solve(jacobian, -pack_harmonics(current))
+            step = newton_step(cell, c, current, ops, samples)
         except np.linalg.LinAlgError:
-            step = np.linalg.lstsq(jacobian, -pack_harmonics(current), rcond=None)[0]
-        step = unpack_harmonics(step, n)
+            message = f"the Jacobian is singular at Newton step {steps}"
+            break
+        if not np.all(np.isfinite(step)):
+            message = f"the Newton step is not finite at Newton step {steps}"
+            break
         for _ in range(30):
             trial = c + step
             try:

@@ -1,0 +1,124 @@
+"""The Newton step of a cell, by the cell's structure (issue 19, section 5).
+
+The Jacobian of the cell's residual (`railtrack.equations.cell_harmonic_balance`),
+
+    dR_n = (K1_n + K2_n M s_n^2) dc_n + K2_n dF_n,
+
+couples the N sleepers within a harmonic (through the rail, K1_n and K2_n) and
+the harmonics within a sleeper (through its law, dF).  Split each sleeper's
+tangent into its mean over the period and the rest:
+``dF_{j,n} = (Kbar_j + i omega_n Cbar_j) dc_{j,n} + E_j dc_j``.  The mean part
+joins the rail's blocks, ``B_n = K1_n + K2_n diag(M s_n^2 + Kbar + i omega_n Cbar)``,
+one N x N complex matrix per harmonic.  The rest E is non-zero only for
+sleepers whose tangent varies over the period (the nonlinear ones, q of them);
+for a linear law, or a gap law that is never touched, it is exactly zero.
+Woodbury's identity then solves ``(B + K2 V^T E V) dx = -R`` with m + 1
+solves of N x N and one real system of size q (2m + 1):
+
+    y = -B^{-1} R,   s = (I + E W)^{-1} E V y,   dx = y - B^{-1} K2 V^T s,
+
+``W = V B^{-1} K2 V^T`` (the nonlinear sleepers' displacement per unit force
+through rail, pads and every mean tangent).  One hanging sleeper in 30 at
+m = 40: a system of 81 unknowns instead of 2430.  The step is the exact
+Newton step: the same numbers as the dense Jacobian's, up to round-off.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..equations.cell_harmonic_balance import CellOperators, cell_force_jacobian, tangent_spectrum
+
+__all__ = ["newton_step", "varying_sleepers"]
+
+
+def varying_sleepers(samples_stiffness: np.ndarray, samples_damping: np.ndarray) -> np.ndarray:
+    """Indices of the sleepers whose tangent (N, S) varies over the period."""
+    varies = (np.ptp(samples_stiffness, axis=-1) > 0) | (np.ptp(samples_damping, axis=-1) > 0)
+    return np.flatnonzero(varies)
+
+
+def _real_blocks(direct: np.ndarray, conjugate: np.ndarray) -> np.ndarray:
+    """Per sleeper, the real (2m+1) x (2m+1) matrix of dF = D dc + C conj(dc), packed
+    ``[Re n = 0..m, Im n = 1..m]`` in rows and columns; shapes (q, m+1, m+1) -> (q, 2m+1, 2m+1)."""
+    on_real = direct + conjugate
+    on_imag = 1j * (direct - conjugate)[:, :, 1:]
+    top = np.concatenate([on_real.real, on_imag.real], axis=2)
+    bottom = np.concatenate([on_real[:, 1:].imag, on_imag[:, 1:].imag], axis=2)
+    return np.concatenate([top, bottom], axis=1)
+
+
+def _to_pack(blocks: np.ndarray) -> np.ndarray:
+    """Block-diagonal (q sleepers) real matrix in `pack_harmonics` order (part, n, sleeper)."""
+    q, size, _ = blocks.shape
+    out = np.zeros((size, q, size, q))
+    out[:, np.arange(q), :, np.arange(q)] = blocks
+    return out.reshape(size * q, size * q)
+
+
+def _harmonic_map(matrices: np.ndarray) -> np.ndarray:
+    """Real packed matrix of ``z_n -> T_n z_n`` for complex T (m+1, q, q), T_0 real."""
+    m, q = matrices.shape[0] - 1, matrices.shape[1]
+    size = (2 * m + 1) * q
+    out = np.zeros((size, size))
+    out[:q, :q] = matrices[0].real
+    for n in range(1, m + 1):
+        re = slice(q * n, q * (n + 1))
+        im = slice(q * (m + n), q * (m + n + 1))
+        out[re, re] = matrices[n].real
+        out[re, im] = -matrices[n].imag
+        out[im, re] = matrices[n].imag
+        out[im, im] = matrices[n].real
+    return out
+
+
+def _pack(values: np.ndarray) -> np.ndarray:
+    return np.concatenate([values[0].real, values[1:].real.ravel(), values[1:].imag.ravel()])
+
+
+def _unpack(x: np.ndarray, q: int) -> np.ndarray:
+    m = (x.size // q - 1) // 2
+    out = np.empty((m + 1, q), dtype=complex)
+    out[0] = x[:q]
+    out[1:] = (x[q:q + m * q] + 1j * x[q + m * q:]).reshape(m, q)
+    return out
+
+
+def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellOperators,
+                samples: int) -> np.ndarray:
+    """The exact Newton step dc (N, m+1) for the residual R (m+1, N) at c (N, m+1) [m].
+
+    Parameters as `railtrack.equations.cell_harmonic_balance.cell_jacobian`;
+    `residual` is `cell_residual`'s first output at `coefficients`.
+
+    Raises
+    ------
+    numpy.linalg.LinAlgError
+        If a block or the reduced system is singular.
+    """
+    m = ops.omega.size - 1
+    tangent, samples_tangent = tangent_spectrum(cell, coefficients, ops, samples)
+    mean_stiffness, mean_damping = tangent[0][:, 2 * m].real, tangent[1][:, 2 * m].real
+    support = (-cell.sleeper_mass * ops.omega[:, None] ** 2 + mean_stiffness
+               + 1j * ops.omega[:, None] * mean_damping)                        # (m+1, N)
+    blocks = ops.first + ops.second * support[:, None, :]
+    blocks[0] = blocks[0].real
+    y = -np.linalg.solve(blocks, residual[..., None])[..., 0]
+    y[0] = y[0].real
+    varying = varying_sleepers(*samples_tangent)
+    if varying.size == 0:
+        return y.T
+    direct, conjugate = cell_force_jacobian(tangent[0][varying], tangent[1][varying], ops.omega)
+    diagonal = np.arange(m + 1)
+    direct[:, diagonal, diagonal] -= (mean_stiffness[varying, None]
+                                      + 1j * ops.omega * mean_damping[varying, None])
+    rest = _to_pack(_real_blocks(direct, conjugate))
+    through_rail = np.linalg.solve(blocks, ops.second[:, :, varying])           # (m+1, N, q)
+    response = _harmonic_map(through_rail[:, varying, :])
+    q = varying.size
+    reduced = np.eye(rest.shape[0]) + rest @ response
+    forces = _unpack(np.linalg.solve(reduced, rest @ _pack(y[:, varying])), q)
+    correction = np.einsum("nab,nb->na", through_rail, forces)
+    step = y - correction
+    step[0] = step[0].real
+    return step.T
