@@ -161,11 +161,11 @@ def test_soft_nonlinear_sleeper_dips_and_the_cell_carries_the_train(passage):
     result = solve_cell(passage, cell, m)
     assert result.converged, result.message
     weight = passage.static_load_per_sleeper
-    mean_force = result.foundation_force[:, m]
+    mean_force = result.foundation_harmonics[:, m]
     np.testing.assert_allclose(mean_force.imag, 0.0, atol=1e-9 * weight)
     np.testing.assert_allclose(mean_force.real.mean(), -weight, rtol=1e-9)
     # at rest the seat load is the foundation force
-    np.testing.assert_allclose(result.seat_load[:, m], mean_force, rtol=1e-12)
+    np.testing.assert_allclose(result.seat_harmonics[:, m], mean_force, rtol=1e-12)
     # the soft sleeper carries less than the weight, its neighbours more; it dips most
     assert -mean_force[soft].real < weight < -mean_force[soft - 1].real
     tau = np.linspace(0.0, 1.0, 256, endpoint=False)
@@ -191,14 +191,14 @@ def test_hanging_sleeper_loads_its_neighbours(gap):
                         samples=samples)
     assert sound.converged and result.converged, result.message
     weight = PAPER.static_load_per_sleeper
-    np.testing.assert_allclose(result.foundation_force[:, m].real.mean(), -weight, rtol=1e-9)
+    np.testing.assert_allclose(result.foundation_harmonics[:, m].real.mean(), -weight, rtol=1e-9)
     w = history(result.coefficients)
     velocity = history(result.coefficients * 1j * PAPER.harmonic_frequencies(m))
     contact = np.mean(K2 * (w[hang] + gap) + ETA2 * velocity[hang] < 0)
     assert 0.0 < contact < 1.0
     assert np.argmin(w.min(axis=1)) == hang and w[hang].min() < -gap
-    peak = -history(result.seat_load).min(axis=1)          # largest downward rail-seat load
-    peak_sound = -history(sound.seat_load).min(axis=1)
+    peak = -history(result.seat_harmonics).min(axis=1)          # largest downward rail-seat load
+    peak_sound = -history(sound.seat_harmonics).min(axis=1)
     np.testing.assert_allclose(peak_sound, peak_sound[0], rtol=1e-9)     # identical sleepers
     assert peak[hang] < peak_sound[0] < min(peak[hang - 1], peak[hang + 1])
     assert np.argmax(peak) in (hang - 1, hang + 1)

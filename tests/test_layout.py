@@ -29,7 +29,7 @@ PUBLIC = {
     "simulate_time_domain", "TimeDomainSolution", "TimeStepWarning", "LongRunWarning",
     "NonFiniteLawError", "estimate_step_error", "explore", "dissipation", "Dissipation",
     "load_work", "floquet", "Floquet", "StabilityChange", "UnstableSolutionWarning",
-    "ring_multipliers", "RingMultipliers",
+    "ring_multipliers", "RingMultipliers", "SleeperCell", "GapFoundation", "CellSolution",
 }
 
 

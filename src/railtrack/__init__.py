@@ -58,6 +58,9 @@ from .timedomain.monodromy import RingMultipliers, ring_multipliers
 from .timedomain.timestep import TimeStepWarning, estimate_step_error
 from .equations.load import axle_factor, load_coefficients
 from .model.passage import Passage
+from .model.cell import SleeperCell
+from .model.gap import GapFoundation
+from .solvers.cell_solution import CellSolution
 from .model.track import Track
 from .model.train import Train
 
@@ -83,6 +86,9 @@ __all__ = [
     "BilinearFoundation",
     "CubicFoundation",
     "CallableFoundation",
+    "GapFoundation",
+    "SleeperCell",
+    "CellSolution",
     "as_foundation",
     "solve",
     "METHODS",

@@ -18,8 +18,6 @@ damping force switched on at contact) defeats it: use a continuous one.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
 from ..equations.cell_harmonic_balance import cell_operators, cell_residual, two_sided_norm
@@ -30,43 +28,11 @@ from ..equations.harmonic_balance import (
 )
 from ..model.cell import SleeperCell
 from ..model.passage import Passage
+from .cell_solution import CellSolution
 from .cell_step import newton_step
 from .foundation_at_rest import static_deflection
 
-__all__ = ["CellSolution", "solve_cell"]
-
-
-@dataclass(frozen=True)
-class CellSolution:
-    """A cell's periodic response; ``converged`` is True only if ``residual <= tol``.
-
-    Attributes
-    ----------
-    coefficients : ndarray, shape (N, 2m+1)
-        c_{j,n}, n = -m..m [m], w positive upward.
-    foundation_force : ndarray, shape (N, 2m+1)
-        Harmonics of f_j(w_j, w_j') [N] (by AFT), negative in compression.
-    seat_load : ndarray, shape (N, 2m+1)
-        Harmonics of the rail-seat load p_j = M_j w_j'' + f_j, the force of the
-        rail on the pad [N], negative when the rail pushes the sleeper down.
-    harmonics, samples, iterations : int
-    converged : bool
-    residual : float
-        Relative residual ||R|| / ||g|| (two-sided norms) of the last iterate.
-    residual_history : ndarray
-    message : str
-    """
-
-    coefficients: np.ndarray
-    foundation_force: np.ndarray
-    seat_load: np.ndarray
-    harmonics: int
-    samples: int
-    converged: bool
-    residual: float
-    iterations: int
-    residual_history: np.ndarray
-    message: str
+__all__ = ["solve_cell"]
 
 
 def _linear_guess(passage: Passage, cell: SleeperCell, ops) -> np.ndarray:
@@ -196,5 +162,5 @@ def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: floa
         return np.concatenate([np.conj(x[:, :0:-1]), x], axis=-1)
 
     seat = -cell.sleeper_mass[:, None] * omega**2 * c + force
-    return CellSolution(two_sided(c), two_sided(force), two_sided(seat), m, int(samples),
-                        converged, float(norm), steps, np.array(history), message)
+    return CellSolution(passage, cell, two_sided(c), two_sided(force), two_sided(seat), m,
+                        int(samples), converged, float(norm), steps, np.array(history), message)

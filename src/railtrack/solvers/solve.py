@@ -30,10 +30,12 @@ from .auto_harmonics import (
 from .diagnosis import convergence_error
 from .fixed_point import SolverOutcome, automatic_split, contraction_factors, iterate_fixed_point
 from .foundation_at_rest import check_foundation_at_rest
+from ..model.cell import SleeperCell
 from ..model.foundations import as_foundation
 from ..equations.harmonic_balance import HarmonicSystem, residual, residual_norm, two_sided
 from ..equations.linear import analytic_coefficients
 from .newton import iterate_newton, linear_guess
+from .cell_auto import solve_track_cell
 from .conditioning import check_conditioning
 from .solution import ConvergenceWarning, Solution
 from .stability_hint import judge_stability
@@ -102,10 +104,12 @@ def solve(
         Rail, pads and sleepers, e.g. ``Track.paper()``; scalar fields only.
     train : Train
         Wagon length, axles and speed, e.g. ``Train.paper()``; scalar speed.
-    foundation : foundation object or callable
+    foundation : foundation object, callable or SleeperCell
         `LinearFoundation`, `BilinearFoundation`, `CubicFoundation`, or any
         callable ``f(w, v)`` returning the foundation force [N] as an array
-        shaped like w.
+        shaped like w.  A `SleeperCell` (sleepers that differ, repeating
+        every N) is solved by `railtrack.solvers.cell_auto` and returns a
+        `CellSolution`; its sleepers' masses and pads replace the track's.
     harmonics : int or "auto"
         m, the number of harmonics kept (eq. 19).  "auto" (default) picks
         the smallest m whose estimated truncation error is below `accuracy`
@@ -182,6 +186,11 @@ def solve(
     (True, True)
     >>> w = solution.sleeper_displacement([0.0, 0.1])    # metres, w < 0 is down
     """
+    if isinstance(foundation, SleeperCell):
+        return solve_track_cell(track, train, foundation, harmonics, method, accuracy=accuracy,
+                                tol=tol, max_iterations=max_iterations, samples=samples,
+                                initial=initial, strict=strict, stability=stability,
+                                check_foundation=check_foundation)
     if method not in METHODS:
         raise ValueError(f"method must be one of {sorted(METHODS)}; got {method!r}")
     passage = Passage(track, train)

@@ -1,0 +1,172 @@
+"""harmonics="auto" for a cell: the truncation estimate and the rounds that grow m.
+
+The neglected harmonics n = m+1..8m of a cell are estimated as
+`railtrack.solvers.truncation` does for one sleeper.  The foundation forces
+evaluated on the truncated solution have harmonics above m (the excess
+F^+_n); each law is linearised about its mean tangent (Kbar_j, Cbar_j over
+the period), and the rail, pads and sleepers answer per harmonic,
+
+    [K1_n + K2_n diag(M s^2 + Kbar + i omega_n Cbar)] c_n = g_n - K2_n F^+_n,
+
+the cell's equations (`railtrack.equations.cell_harmonic_balance`) at n > m.
+The error is the largest, over the sleepers, of the tail's max norm over
+the period relative to the largest sleeper peak in the cell.  "auto" starts
+from the m that `predict_harmonics` gives the stiffest-to-resolve law of the
+cell, and grows m (by at least 10 %) to what the solution's spectrum and its
+estimated tail need, at most `AUTO_ROUNDS` times.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import replace
+
+import numpy as np
+
+from ..equations.cell_harmonic_balance import _forces, _synthesize, cell_operators
+from ..model.passage import Passage
+from .arguments import require_count, require_fraction
+from .auto_harmonics import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION
+from .cell_newton import solve_cell
+from .cell_solution import CellSolution
+from .foundation_at_rest import check_foundation_at_rest
+from .solution import ConvergenceError, ConvergenceWarning, TruncationWarning
+from .truncation import auto_samples, grown_harmonics, predict_harmonics
+
+__all__ = ["cell_truncation", "solve_cell_auto", "solve_track_cell", "MAX_CELL_HARMONICS"]
+
+MAX_CELL_HARMONICS = 400
+"""The largest m that harmonics="auto" takes for a cell."""
+
+
+def cell_truncation(solution: CellSolution) -> tuple[float, np.ndarray]:
+    """Estimated truncation error [-] and tail c_{j, m+1..8m} (N, 7m) [m] (module docstring)."""
+    passage, cell, m = solution.passage, solution.cell, solution.harmonics
+    top = 8 * m
+    samples = auto_samples(top)
+    c = solution.coefficients[:, m:]
+    omega = passage.fundamental_frequency * np.arange(m + 1)
+    w, v = _synthesize(c, omega, samples)
+    spectrum = np.fft.rfft(_forces(cell, w, v), axis=-1) / samples
+    excess = spectrum[:, m + 1:top + 1]                                       # (N, 7m)
+    tangent = _forces(cell, w, v, tangent=True)
+    stiffness, damping = tangent[0].mean(axis=-1), tangent[1].mean(axis=-1)
+    high = passage.fundamental_frequency * np.arange(m + 1, top + 1)
+    ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, high)
+    support = -cell.sleeper_mass * high[:, None] ** 2 + stiffness + 1j * high[:, None] * damping
+    blocks = ops.first + ops.second * support[:, None, :]
+    rhs = ops.load - np.einsum("nab,bn->na", ops.second, excess)
+    tail = np.linalg.solve(blocks, rhs[..., None])[..., 0].T
+    grid = np.zeros((c.shape[0], samples // 2 + 1), dtype=complex)
+    grid[:, m + 1:top + 1] = tail * samples
+    error = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)))
+    whole = grid.copy()
+    whole[:, :m + 1] = c * samples
+    peak = np.max(np.abs(np.fft.irfft(whole, samples, axis=-1)))
+    return float(error / peak), tail
+
+
+def _first_harmonics(passage: Passage, cell, accuracy: float) -> int:
+    """The largest m that `predict_harmonics` gives any of the cell's laws alone."""
+    chosen = 1
+    for law in {id(law): law for law in cell.foundations}.values():
+        try:
+            chosen = max(chosen, predict_harmonics(passage, law, accuracy / 2)[0])
+        except (ValueError, ArithmeticError):
+            chosen = max(chosen, 15)
+    return min(chosen, MAX_CELL_HARMONICS)
+
+
+def solve_cell_auto(passage: Passage, cell, *, accuracy: float = DEFAULT_ACCURACY,
+                    tol: float = 1e-10, max_iterations: int = 50) -> CellSolution:
+    """The cell's response at the smallest m whose estimated truncation error meets `accuracy`.
+
+    Examples
+    --------
+    >>> from railtrack.model.cell import SleeperCell
+    >>> from railtrack.model.foundations import CubicFoundation
+    >>> passage = Passage.paper()
+    >>> cell = SleeperCell.identical(passage, CubicFoundation.paper(), 3)
+    >>> result = solve_cell_auto(passage, cell)
+    >>> result.converged, bool(result.truncation_error <= 1e-3)
+    (True, True)
+    """
+    if not 0.0 < accuracy < 1.0:
+        raise ValueError(f"accuracy must be in (0, 1); got {accuracy!r}")
+    m = _first_harmonics(passage, cell, accuracy)
+    initial = None
+    for _ in range(AUTO_ROUNDS + 1):
+        result = solve_cell(passage, cell, m, tol=tol, max_iterations=max_iterations,
+                            samples=auto_samples(m), initial=initial)
+        if not result.converged:
+            return result
+        error, tail = cell_truncation(result)
+        result = replace(result, truncation_error=error)
+        if error <= accuracy or m >= MAX_CELL_HARMONICS:
+            return result
+        grown = max(grown_harmonics(np.concatenate([result.coefficients[j, m:], tail[j]])[:m + 1],
+                                    np.concatenate([result.coefficients[j, m:], tail[j]])[m + 1:],
+                                    0.8 * accuracy)
+                    for j in range(result.sleepers))
+        bigger = min(MAX_CELL_HARMONICS, max(math.ceil(1.1 * m), grown))
+        initial = np.concatenate([result.coefficients[:, m:], tail], axis=1)[:, :bigger + 1]
+        m = bigger
+    return result
+
+
+
+def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton", *,
+                     accuracy=None, tol=None, max_iterations=None, samples=None, initial=None,
+                     strict: bool = False, check_foundation: bool = True,
+                     stability: str = "quick") -> CellSolution:
+    """`railtrack.solve` for a `SleeperCell`: Newton, an explicit m or "auto".
+
+    Arguments as `railtrack.solve`.  Stability is not judged for a cell (its
+    Floquet multipliers are not computed): "quick" and "off" skip it, "full"
+    is refused.  `split` and `fallback` do not apply.
+    """
+    if method != "newton":
+        raise ValueError(f"a SleeperCell is solved by method='newton' only; got {method!r}")
+    if stability == "full":
+        raise ValueError("stability='full' is not available for a SleeperCell (its Floquet "
+                         "multipliers are not computed); use 'quick' or 'off'")
+    if stability not in ("quick", "off"):
+        raise ValueError(f'stability must be "quick", "full" or "off"; got {stability!r}')
+    passage = Passage(track, train)
+    arrays = [f for part in (track, train) for f, v in vars(part).items()
+              if not isinstance(v, tuple) and np.ndim(v) > 0]
+    if arrays:
+        raise ValueError(f"solve takes a track and a train with scalar fields; {arrays} are arrays")
+    if check_foundation:
+        for law, k1, eta1 in zip(cell.foundations, cell.pad_stiffness, cell.pad_damping):
+            check_foundation_at_rest(law, float(k1), float(eta1))
+    tol = 1e-10 if tol is None else require_fraction("tol", tol)
+    iterations = 50 if max_iterations is None else require_count("max_iterations",
+                                                                 max_iterations, 0)
+    automatic = isinstance(harmonics, str) and harmonics == "auto"
+    if automatic:
+        if samples is not None or initial is not None:
+            raise ValueError("samples and initial need an explicit harmonics=m; "
+                             "'auto' chooses m itself")
+        accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy",
+                                                                               accuracy)
+        result = solve_cell_auto(passage, cell, accuracy=accuracy, tol=tol,
+                                 max_iterations=iterations)
+        limit = accuracy
+    else:
+        require_count("harmonics", harmonics, 1)
+        result = solve_cell(passage, cell, int(harmonics), tol=tol, max_iterations=iterations,
+                            samples=samples, initial=initial)
+        if result.converged:
+            result = replace(result, truncation_error=cell_truncation(result)[0])
+        limit = WARN_TRUNCATION
+    if not result.converged:
+        if strict:
+            raise ConvergenceError(result.message, result, [])
+        warnings.warn(result.message, ConvergenceWarning, stacklevel=3)
+    elif result.truncation_error > limit:
+        warnings.warn(f"harmonics={result.harmonics}: the estimated truncation error is "
+                      f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
+                      f"larger harmonics", TruncationWarning, stacklevel=3)
+    return result

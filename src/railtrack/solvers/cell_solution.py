@@ -1,0 +1,164 @@
+"""The periodic response of a cell of N sleepers, and what a track engineer reads from it.
+
+Every output is per sleeper of the cell (first axis j = 0..N-1, sleeper j at
+x = jL), or along the rail at any x; sleeper j + pN repeats sleeper j
+delayed by pNL/v.  Signs as `railtrack.Solution`: displacements positive
+upward, rail-seat load and foundation force positive in compression,
+bending moment positive when sagging.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from ..equations.cell_rail_field import cell_rail_field_coefficients
+from ..equations.moment import kink_coefficients, kink_sum
+from ..model.passage import Passage
+
+__all__ = ["CellSolution"]
+
+
+@dataclass(frozen=True)
+class CellSolution:
+    """A cell's periodic response; ``converged`` is True only if ``residual <= tol``.
+
+    Attributes
+    ----------
+    passage : Passage
+        Rail, spacing and train (its sleeper and pad fields are not used).
+    cell : SleeperCell
+        The sleepers, pads and laws solved for.
+    coefficients : ndarray, shape (N, 2m+1)
+        c_{j,n}, n = -m..m [m], w positive upward.
+    foundation_harmonics : ndarray, shape (N, 2m+1)
+        Harmonics of f_j(w_j, w_j') [N] (by AFT), negative in compression.
+    seat_harmonics : ndarray, shape (N, 2m+1)
+        Harmonics of p_j = M_j w_j'' + f_j [N], the pad's force on the sleeper
+        with w's sign: minus the rail-seat load.
+    harmonics, samples, iterations : int
+    converged : bool
+    residual : float
+        Relative residual ||R|| / ||g|| of the last iterate.
+    residual_history : ndarray
+    message : str
+    truncation_error : float
+        Estimated max-norm error of the sleepers' displacements from keeping m
+        harmonics, relative to the largest peak in the cell [-]; NaN if not estimated.
+    """
+
+    passage: Passage
+    cell: Any
+    coefficients: np.ndarray
+    foundation_harmonics: np.ndarray
+    seat_harmonics: np.ndarray
+    harmonics: int
+    samples: int
+    converged: bool
+    residual: float
+    iterations: int
+    residual_history: np.ndarray
+    message: str
+    truncation_error: float = float("nan")
+
+    @property
+    def sleepers(self) -> int:
+        """N, the sleepers of the cell."""
+        return int(self.coefficients.shape[0])
+
+    @property
+    def period(self) -> float:
+        """T = H / v [s]."""
+        return float(self.passage.period)
+
+    @property
+    def frequencies(self) -> np.ndarray:
+        """omega_n, n = -m..m [rad/s]."""
+        return self.passage.fundamental_frequency * np.arange(-self.harmonics, self.harmonics + 1)
+
+    def _series(self, coefficients: np.ndarray, t: ArrayLike) -> np.ndarray:
+        t = np.asarray(t, dtype=float)
+        phases = np.exp(1j * np.multiply.outer(t, self.frequencies))        # (..., 2m+1)
+        return np.moveaxis((phases @ coefficients.T).real, -1, 0)
+
+    def sleeper_displacement(self, t: ArrayLike) -> np.ndarray:
+        """w_j(t) [m], shape (N,) + t.shape; t = 0 when a wagon's first axle is above sleeper 0."""
+        return self._series(self.coefficients, t)
+
+    def sleeper_velocity(self, t: ArrayLike) -> np.ndarray:
+        """w_j'(t) [m/s], shape (N,) + t.shape."""
+        return self._series(1j * self.frequencies * self.coefficients, t)
+
+    def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
+        """Pad force on each sleeper, positive in compression [N], shape (N,) + t.shape.
+
+        The pad is linear, so it pulls (a negative load) where the rail lifts
+        more than the sleeper: a real clip would hold the rail down there.
+        """
+        return -self._series(self.seat_harmonics, t)
+
+    def foundation_force(self, t: ArrayLike) -> np.ndarray:
+        """-f_j(w_j, w_j'), the force on each foundation, positive in compression [N]."""
+        w, v = self.sleeper_displacement(t), self.sleeper_velocity(t)
+        out = np.empty_like(w)
+        for j, law in enumerate(self.cell.foundations):
+            out[j] = -np.asarray(law.force(w[j], v[j]), dtype=float)
+        return out
+
+    def contact_fraction(self, samples: int = 2048) -> np.ndarray:
+        """Share of the period in which each sleeper presses on its foundation (force > 0) [-]."""
+        t = np.arange(samples) * self.period / samples
+        return np.mean(self.foundation_force(t) > 0.0, axis=-1)
+
+    def rail_above_sleepers(self, t: ArrayLike) -> np.ndarray:
+        """Rail above each sleeper, w_j + p_j / (k1_j + eta1_j d/dt) [m], (N,) + t.shape."""
+        cell = self.cell
+        pad = cell.pad_stiffness[:, None] + 1j * self.frequencies * cell.pad_damping[:, None]
+        return self._series(self.coefficients + self.seat_harmonics / pad, t)
+
+    def _field(self, t: ArrayLike, x: ArrayLike, which: int) -> np.ndarray:
+        t, x = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(x, dtype=float))
+        xs, index = np.unique(x, return_inverse=True)
+        m = self.harmonics
+        omega = self.frequencies[m:]
+        fields = cell_rail_field_coefficients(
+            self.passage, omega, self.coefficients[:, m:], self.seat_harmonics[:, m:],
+            self.cell.pad_stiffness, xs)
+        one_sided = fields[min(which, 1)]
+        if which == 1:
+            ei = self.passage.rail_bending_stiffness
+            one_sided = one_sided - kink_coefficients(self.passage, omega, xs) / ei
+        weights = np.where(np.arange(m + 1) == 0, 1.0, 2.0)
+        chosen = one_sided[index.reshape(x.shape)] * weights
+        return np.einsum("...n,...n->...", chosen, np.exp(1j * np.multiply.outer(t, omega))).real
+
+    def rail_displacement(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
+        """w_r(x, t) [m] anywhere along the rail (x from sleeper 0, towards +x); t, x broadcast.
+
+        `railtrack.equations.cell_rail_field`; at a sleeper it is
+        `rail_above_sleepers`, and for a cell of identical sleepers it is
+        `railtrack.Solution.rail_displacement`.
+        """
+        return self._field(t, x, 0)
+
+    def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
+                            kinks: str = "closed form") -> np.ndarray:
+        """EI d^2 w_r/dx^2 at (x, t) [N m], sagging positive; t, x broadcast.
+
+        The kinks under the wheels are summed in closed form
+        (`railtrack.equations.moment`), as `railtrack.Solution.rail_bending_moment`
+        does; ``kinks="series"`` gives the plain truncated series.
+        """
+        ei = self.passage.rail_bending_stiffness
+        if kinks == "closed form":
+            return ei * self._field(t, x, 1) + kink_sum(self.passage, t, x)
+        if kinks == "series":
+            return ei * self._field(t, x, 2)
+        raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
+
+    def one_period(self, samples: int = 400) -> np.ndarray:
+        """Times over [0, T) [s], for plotting and extremes."""
+        return np.linspace(0.0, self.period, samples, endpoint=False)
