@@ -1,7 +1,7 @@
 """Speed and iteration counts of the railtrack solvers on the paper's cases.
 
 Run with ``make bench`` (all sections), or ``python benchmarks/bench.py
-stability`` for some of them (``solvers``, ``sweep``, ``stability``).
+stability`` for some of them (``solvers``, ``sweep``, ``stability``, ``cells``).
 Prints Markdown tables: the machine, the median wall time of each solve
 (median over several runs, each run timing a batch of repeated solves), and
 the iterations each method needs to reach a relative residual of 1e-10 of
@@ -212,7 +212,35 @@ def bench_stability() -> None:
           f"{BRANCH_RUNS} runs) | {statistics.median(branch_runs) * 1e3:.0f} |")
 
 
-SECTIONS = {"solvers": main, "sweep": bench_sweep, "stability": bench_stability}
+def bench_cells() -> None:
+    """Sleepers that differ (issue 19): one hanging sleeper in a cell of N, harmonics="auto".
+
+    The paper's track and wagon at 45 m/s, sound sleepers on k2 = 20 MN/m,
+    eta2 = 0.2 MN s/m, the middle one hanging 1 mm above the same ballast
+    (`rt.GapFoundation`); the cost against N = 1 (today's solve of the sound
+    track, harmonics="auto") and its growth with N.  The issue's target: under
+    0.5 s at N = 30.
+    """
+    track, train = rt.Track.paper(), rt.Train.paper()
+    passage = rt.Passage(track, train)
+    sound = rt.LinearFoundation(20e6, 0.2e6)
+    today = median_time(lambda: rt.solve(track, train, sound, stability="off"), 10)
+    print()
+    print("| one hanging sleeper (1 mm) in a cell of N, harmonics=\"auto\" | m | time [ms] "
+          "| / N = 1 |")
+    print("|---|---:|---:|---:|")
+    print(f"| today's solve, N = 1, sound track | "
+          f"{rt.solve(track, train, sound, stability='off').harmonics} | {today * 1e3:.1f} | 1 |")
+    for n in (10, 30, 60, 100):
+        cell = rt.SleeperCell.identical(passage, sound, n).with_sleeper(
+            n // 2, foundation=rt.GapFoundation(1e-3, 20e6, 0.2e6))
+        result = rt.solve(track, train, cell)
+        elapsed = median_time(lambda: rt.solve(track, train, cell), 1)
+        print(f"| N = {n} | {result.harmonics} | {elapsed * 1e3:.0f} | {elapsed / today:.0f} |")
+
+
+SECTIONS = {"solvers": main, "sweep": bench_sweep, "stability": bench_stability,
+            "cells": bench_cells}
 
 
 if __name__ == "__main__":
