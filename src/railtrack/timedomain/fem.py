@@ -156,6 +156,9 @@ class RingMesh:
         DOF of sleeper i.
     rail_dofs : ndarray of int, shape (n_sleepers,)
         Deflection DOF of the rail node above sleeper i.
+    sleeper_mass, pad_stiffness, pad_damping : ndarray, shape (n_sleepers,)
+        M_i [kg], k1_i [N/m], eta1_i [N s/m] of ring sleeper i and its pad:
+        the passage's on every sleeper, or a cell's (`railtrack.timedomain.ring_cell`).
     """
 
     passage: Passage
@@ -167,6 +170,9 @@ class RingMesh:
     stiffness: sp.csc_matrix
     sleeper_dofs: np.ndarray
     rail_dofs: np.ndarray
+    sleeper_mass: np.ndarray | None = None
+    pad_stiffness: np.ndarray | None = None
+    pad_damping: np.ndarray | None = None
 
     @property
     def n_nodes(self) -> int:
@@ -178,15 +184,29 @@ class RingMesh:
         return 2 * self.n_nodes + self.n_sleepers
 
 
-def ring_mesh(passage: Passage, elements_per_span: int) -> RingMesh:
+def ring_mesh(passage: Passage, elements_per_span: int,
+              sleepers: tuple[ArrayLike, ArrayLike, ArrayLike] | None = None) -> RingMesh:
     """Assemble M, C, K of the ring of length H (see the module docstring).
+
+    Parameters
+    ----------
+    passage : Passage
+    elements_per_span : int
+    sleepers : (mass, pad_stiffness, pad_damping), each of shape (H / L,), optional
+        M_i [kg], k1_i [N/m], eta1_i [N s/m] of each ring sleeper and its pad
+        (a cell of differing sleepers); default the passage's on every one.
 
     Raises
     ------
     ValueError
-        If H / L is not an integer (`sleepers_on_ring`).
+        If H / L is not an integer (`sleepers_on_ring`), or `sleepers` has
+        arrays of another length.
     """
     n_sleepers = sleepers_on_ring(passage)
+    if sleepers is None:
+        sleepers = (passage.sleeper_mass, passage.pad_stiffness, passage.pad_damping)
+    masses, pad_k, pad_c = (np.array(np.broadcast_to(np.asarray(value, dtype=float), n_sleepers))
+                            for value in sleepers)
     n_nodes = n_sleepers * elements_per_span
     n_dofs = 2 * n_nodes + n_sleepers
     h = float(passage.sleeper_spacing) / elements_per_span
@@ -210,20 +230,25 @@ def ring_mesh(passage: Passage, elements_per_span: int) -> RingMesh:
     pad_rows = np.concatenate([rail_dofs, sleeper_dofs, rail_dofs, sleeper_dofs])
     pad_cols = np.concatenate([rail_dofs, sleeper_dofs, sleeper_dofs, rail_dofs])
     pad_sign = np.repeat([1.0, 1.0, -1.0, -1.0], n_sleepers)
-    pad = sp.coo_matrix((pad_sign, (pad_rows, pad_cols)), shape)
-    sleepers = sp.coo_matrix(
-        (np.full(n_sleepers, float(passage.sleeper_mass)), (sleeper_dofs, sleeper_dofs)), shape
-    )
+
+    def pad(values: np.ndarray) -> sp.coo_matrix:
+        # Pad i couples rail node i e and sleeper i with its own k1_i or eta1_i.
+        return sp.coo_matrix((pad_sign * np.tile(values, 4), (pad_rows, pad_cols)), shape)
+
+    sleeper_masses = sp.coo_matrix((masses, (sleeper_dofs, sleeper_dofs)), shape)
     return RingMesh(
         passage=passage,
         elements_per_span=elements_per_span,
         n_sleepers=n_sleepers,
         element_length=h,
-        mass=(m_rail + sleepers).tocsc(),
-        damping=(float(passage.pad_damping) * pad).tocsc(),
-        stiffness=(k_rail + float(passage.pad_stiffness) * pad).tocsc(),
+        mass=(m_rail + sleeper_masses).tocsc(),
+        damping=pad(pad_c).tocsc(),
+        stiffness=(k_rail + pad(pad_k)).tocsc(),
         sleeper_dofs=sleeper_dofs,
         rail_dofs=rail_dofs,
+        sleeper_mass=masses,
+        pad_stiffness=pad_k,
+        pad_damping=pad_c,
     )
 
 

@@ -168,17 +168,25 @@ class CondensedSystem:
         )
 
 
-def _sleeper_projector(mesh: RingMesh) -> sp.csc_matrix:
-    """U U^T: ones on the sleeper diagonal, where the reference law (k0, c0) goes."""
+def _sleeper_projector(mesh: RingMesh, weights=1.0) -> sp.csc_matrix:
+    """U diag(weights) U^T: the reference law (k0, c0) on the sleeper diagonal.
+
+    `weights` is one value for every sleeper or one per sleeper (a cell,
+    `railtrack.timedomain.ring_cell`).
+    """
     dofs = mesh.sleeper_dofs
-    return sp.csc_matrix((np.ones(dofs.size), (dofs, dofs)), shape=(mesh.n_dofs, mesh.n_dofs))
+    values = np.array(np.broadcast_to(np.asarray(weights, dtype=float), dofs.shape))
+    return sp.csc_matrix((values, (dofs, dofs)), shape=(mesh.n_dofs, mesh.n_dofs))
 
 
 def static_state(
     mesh: RingMesh, foundation: Foundation, k0: float, load: np.ndarray, tol: float, iterations: int
 ) -> np.ndarray:
-    """Static equilibrium K u + U f(U^T u, 0) = P with the wheels frozen [m]."""
-    system = CondensedSystem(mesh.stiffness + k0 * _sleeper_projector(mesh), mesh.sleeper_dofs)
+    """Static equilibrium K u + U f(U^T u, 0) = P with the wheels frozen [m].
+
+    `k0` is one reference stiffness [N/m] or one per sleeper (a cell).
+    """
+    system = CondensedSystem(mesh.stiffness + _sleeper_projector(mesh, k0), mesh.sleeper_dofs)
     free = system.lu.solve(load)
     zero = np.zeros(mesh.n_sleepers)
 
@@ -196,14 +204,14 @@ class NewmarkStepper:
     With u' and u'' at the end of a step linear in u_{n+1}, a step is
     ``A u_{n+1} + U g = b`` with A = K + (2/dt) C + (4/dt^2) M (reference
     foundation included) and b from the state at the start of the step and
-    the wheel loads at its end.
+    the wheel loads at its end.  The reference (k0, c0) is one pair of
+    floats or a pair of arrays, one entry per sleeper (a cell).
     """
 
     def __init__(self, mesh, foundation, reference, dt, loads, tol, iterations):
         self.k0, self.c0 = reference
-        projector = _sleeper_projector(mesh)
-        stiffness = mesh.stiffness + self.k0 * projector
-        damping = mesh.damping + self.c0 * projector
+        stiffness = mesh.stiffness + _sleeper_projector(mesh, self.k0)
+        damping = mesh.damping + _sleeper_projector(mesh, self.c0)
         mass = mesh.mass
         self.system = CondensedSystem(
             stiffness + (2.0 / dt) * damping + (4.0 / dt**2) * mass, mesh.sleeper_dofs
