@@ -55,6 +55,12 @@ def _node_moment(u, dof, node, n, h, ei):
     return 0.5 * ei * (left @ _curvature_weights(1.0, h) + right @ _curvature_weights(0.0, h))
 
 
+def _pad(mesh: RingMesh, name: str) -> float:
+    """Sleeper 0's pad k1 [N/m] or eta1 [N s/m]: the mesh's own (a cell's), else the passage's."""
+    values = getattr(mesh, name)
+    return float(getattr(mesh.passage, name) if values is None else values[0])
+
+
 def ring_outputs(mesh: RingMesh, foundation, displacements: np.ndarray,
                  velocities: np.ndarray) -> dict[str, np.ndarray]:
     """Mid-span rail, moments, rail-seat load and foundation force from recorded states.
@@ -63,6 +69,7 @@ def ring_outputs(mesh: RingMesh, foundation, displacements: np.ndarray,
     ----------
     mesh : RingMesh
     foundation : foundation object
+        Sleeper 0's law.
     displacements, velocities : ndarray, shape (n_t, len(watched_dofs(mesh)))
         u and u' at the watched DOFs [m, rad], [m/s, rad/s].
 
@@ -94,7 +101,7 @@ def ring_outputs(mesh: RingMesh, foundation, displacements: np.ndarray,
         rail_displacement_midspan=midspan,
         bending_moment_above_sleeper=_node_moment(u, dof, 0, n, h, ei),
         bending_moment_midspan=moment_mid,
-        rail_seat_load=float(mesh.passage.pad_stiffness) * compression
-        + float(mesh.passage.pad_damping) * compression_rate,
+        rail_seat_load=_pad(mesh, "pad_stiffness") * compression
+        + _pad(mesh, "pad_damping") * compression_rate,
         foundation_force=-np.asarray(foundation.force(w, w_rate), dtype=float),
     )

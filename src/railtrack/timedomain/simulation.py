@@ -30,8 +30,11 @@ from typing import Any
 import numpy as np
 
 from .fem import ring_mesh, sleepers_on_ring, wheel_load_entries
+from .ring_cell import ring_cell, ring_train
+from .ring_fields import SleeperRecorder
 from .ring_outputs import ring_outputs, watched_dofs
 from .ring_state import initial_state
+from ..model.cell import SleeperCell
 from ..model.foundations import as_foundation
 from .newmark import NewmarkStepper, NonFiniteLawError, instability_hint, reference_law
 from .runcost import LongRunWarning, check_run_cost
@@ -86,12 +89,14 @@ def simulate_time_domain(
     newton_tol: float = 1e-11,
     max_newton_iterations: int = 50,
     warn_step_error: float | None = 1e-3,
+    wagons: int = 1,
 ) -> TimeDomainSolution:
     """Periodic steady response of the track by finite elements and Newmark time stepping.
 
-    The ring of `railtrack.timedomain.fem.ring_mesh` (one wagon length H with periodic
-    ends; rail eq. 1, sleepers eq. 4, pads eq. 5) carries the foundation law
-    f(w, w') of eqs. (22), (24) or (25) under each sleeper:
+    The ring of `railtrack.timedomain.fem.ring_mesh` (one wagon length H, or
+    `wagons` of them, with periodic ends; rail eq. 1, sleepers eq. 4, pads
+    eq. 5) carries the foundation law f(w, w') of eqs. (22), (24) or (25)
+    under each sleeper, or the laws of a cell of differing sleepers:
 
         M u'' + C u' + K u + U f(U^T u, U^T u') = P(t),
 
@@ -107,8 +112,14 @@ def simulate_time_domain(
         Track and train; H / L must be an integer (the number of sleepers on
         the ring).  Trains whose H / L is not an integer are not handled (a
         ring of a common multiple of H and L would be).
-    foundation : foundation object or callable
-        Any law accepted by `railtrack.as_foundation`.
+    foundation : foundation object, callable or SleeperCell
+        Any law accepted by `railtrack.as_foundation`, under every sleeper
+        with the passage's sleeper mass and pad; or a
+        `railtrack.model.cell.SleeperCell` of N sleepers: ring sleeper i is
+        cell sleeper i mod N, with that sleeper's mass, pad stiffness, pad
+        damping and law (`railtrack.timedomain.ring_cell`).  N must divide
+        the ring's wagons x H / L sleepers.  Each distinct law object is
+        called once per evaluation, on all the sleepers it carries.
     elements_per_span : int
         Hermite beam elements per sleeper span, >= 1.
     steps_per_period : int
@@ -120,7 +131,8 @@ def simulate_time_domain(
         1.5e-4 at 240 and 1.8e-6 at the default 2400.
     tol : float
         Relative period-to-period change of sleeper 0's response at which the
-        state counts as periodic [-].
+        state counts as periodic [-]; for a cell whose sleepers differ, of
+        every sleeper's response (the largest change over the largest peak).
     max_periods : int
         Periods integrated at most; ``converged=False`` if `tol` is not met.
     start : {"static", "rest"}, Solution or (u, v)
@@ -144,7 +156,15 @@ def simulate_time_domain(
     warn_step_error : float or None
         Warn (`TimeStepWarning`) when the estimated time-step error exceeds
         this fraction of the peak response [-]; None skips the estimate
-        (~0.03 s), e.g. in a deliberate time-step convergence study.
+        (~0.03 s), e.g. in a deliberate time-step convergence study.  For a
+        cell the estimate is that of a uniform track with the cell's mean
+        sleeper, pad and linearised foundation.
+    wagons : int
+        Wagons on the ring, >= 1: the ring is wagons x H long and carries
+        wagons x H / L sleepers (the train tiled into one wagon of length
+        wagons x H, `railtrack.timedomain.ring_cell.ring_train`), so that it
+        can carry a cell longer than one wagon.  The period, the steps per
+        period and the result's passage are then the tiled train's.
 
     Returns
     -------
@@ -153,7 +173,9 @@ def simulate_time_domain(
     Raises
     ------
     ValueError
-        If H / L is not an integer, an argument is out of range,
+        If H / L is not an integer, a cell's size N does not divide the ring's
+        wagons x H / L sleepers (the message names the wagon counts that
+        fit), an argument is out of range,
         `steps_per_period` cannot represent the moving load, or the run would
         need more memory than `railtrack.timedomain.runcost.MEMORY_LIMIT` (checked before
         anything is allocated); `NonFiniteLawError` (a ValueError) if the
@@ -179,7 +201,7 @@ def simulate_time_domain(
     >>> result.converged, round(1e3 * float(result.sleeper_displacement.min()), 2)
     (True, -1.13)
     """
-    passage = Passage(track, train)
+    passage = Passage(track, ring_train(train, wagons))
     elements_per_span = _require_count("elements_per_span", elements_per_span)
     steps_per_period = _require_count("steps_per_period", steps_per_period)
     max_periods = _require_count("max_periods", max_periods)
@@ -192,26 +214,41 @@ def simulate_time_domain(
         raise ValueError(f"warn_step_error must be a finite number > 0 or None; got {warn_step_error!r}")
     check_run_cost(sleepers_on_ring(passage), elements_per_span, steps_per_period, max_periods)
     check_steps_per_period(passage, steps_per_period)
-    foundation = as_foundation(foundation)
-    mesh = ring_mesh(passage, elements_per_span)
-    reference = k0, _ = reference_law(foundation)
+    cell = None
+    if isinstance(foundation, SleeperCell):
+        n_ring = sleepers_on_ring(passage)
+        cell = ring_cell(foundation, n_ring, wagons, n_ring // wagons)
+        mesh = ring_mesh(passage, elements_per_span, cell.sleepers)
+        law, first_law = cell.law, foundation.foundations[0]
+        reference = cell.law.reference()
+        k0, pad = float(np.mean(reference[0])), float(np.mean(cell.pad_stiffness))
+    else:
+        law = first_law = foundation = as_foundation(foundation)
+        mesh = ring_mesh(passage, elements_per_span)
+        reference = k0, _ = reference_law(foundation)
+        pad = float(passage.pad_stiffness)
     n_steps, dt = steps_per_period, float(passage.period) / steps_per_period
     times = dt * np.arange(n_steps)
     loads = wheel_load_entries(mesh, times)
 
     # Newton's tolerance is relative to the mean static deflection: the load
     # per sleeper 2 Q L / H on the pad and the reference foundation in series.
-    scale = float(passage.static_load_per_sleeper) * (1.0 / k0 + 1.0 / float(passage.pad_stiffness))
+    scale = float(passage.static_load_per_sleeper) * (1.0 / k0 + 1.0 / pad)
     newton_abs = newton_tol * scale
 
     try:
-        u, v, a = initial_state(mesh, foundation, start, k0, newton_abs, max_newton_iterations)
+        u, v, a = initial_state(mesh, law, start, reference[0], newton_abs, max_newton_iterations)
     except NonFiniteLawError as error:
         raise NonFiniteLawError(f"{error}{_FINITE}") from None
-    linearized_at = float(np.mean(u[mesh.sleeper_dofs]))
-    step_error = check_step_error(passage, foundation, linearized_at, steps_per_period,
+    if cell is None:
+        estimated, linearized_at = (passage, foundation), float(np.mean(u[mesh.sleeper_dofs]))
+    else:  # a linear stand-in: its tangent is the same at any w
+        estimated, linearized_at = cell.stand_in(passage, u[mesh.sleeper_dofs]), 0.0
+    step_error = check_step_error(*estimated, linearized_at, steps_per_period,
                                   elements_per_span, warn_step_error)
-    stepper = NewmarkStepper(mesh, foundation, reference, dt, loads, newton_abs, max_newton_iterations)
+    stepper = NewmarkStepper(mesh, law, reference, dt, loads, newton_abs, max_newton_iterations)
+    every_sleeper = cell is not None and not cell.uniform
+    recorder = SleeperRecorder(mesh, n_steps)
 
     # Far beyond any track's deflection, and far below overflow in a cubic law.
     bound = GROWTH_LIMIT * max(scale, float(np.max(np.abs(u[mesh.sleeper_dofs]))))
@@ -221,6 +258,7 @@ def simulate_time_domain(
     states, rates = np.empty((n_steps, watched.size)), np.empty((n_steps, watched.size))
     history = np.empty((max_periods, n_steps))
     previous: np.ndarray | None = None
+    previous_all = np.empty_like(record)
     changes: list[float] = []
     converged = False
     for periods in range(1, max_periods + 1):
@@ -228,13 +266,14 @@ def simulate_time_domain(
             record[n] = u[mesh.sleeper_dofs]
             rail[n] = u[mesh.rail_dofs[0]]
             states[n], rates[n] = u[watched], v[watched]
+            recorder.record(n, u, v)
             try:
                 u, v, a = stepper.step(u, v, a, (n + 1) % n_steps)
             except NonFiniteLawError as error:
                 raise NonFiniteLawError(f"{error}, {_when(passage, n_steps, n, periods)}{_FINITE}") from None
             except RuntimeError as error:
                 grown = float(np.max(np.abs(u[mesh.sleeper_dofs]))) / scale
-                hint = f"; {instability_hint(foundation)}" if grown > 100.0 else ""
+                hint = f"; {instability_hint(law)}" if grown > 100.0 else ""
                 raise RuntimeError(f"{error}, {_when(passage, n_steps, n, periods)}, the sleepers having "
                                    f"reached {grown:.3g} times the static deflection{hint}") from None
             reached = float(np.max(np.abs(u[mesh.sleeper_dofs])))
@@ -242,17 +281,23 @@ def simulate_time_domain(
                 raise RuntimeError(
                     f"the response grew without bound in period {periods}: a sleeper reached "
                     f"|w| = {reached:.3g} m, {reached / scale:.3g} times the static deflection scale "
-                    f"{scale:.3g} m, {_when(passage, n_steps, n, periods)}; {instability_hint(foundation)}"
+                    f"{scale:.3g} m, {_when(passage, n_steps, n, periods)}; {instability_hint(law)}"
                 )
         history[periods - 1] = record[:, 0]
         current = history[periods - 1]
         if previous is not None:
-            peak = max(float(np.max(np.abs(current))), np.finfo(float).tiny)
-            changes.append(float(np.max(np.abs(current - previous))) / peak)
+            if every_sleeper:  # the differing sleepers may settle at different rates
+                peak = max(float(np.max(np.abs(record))), np.finfo(float).tiny)
+                changes.append(float(np.max(np.abs(record - previous_all))) / peak)
+            else:
+                peak = max(float(np.max(np.abs(current))), np.finfo(float).tiny)
+                changes.append(float(np.max(np.abs(current - previous))) / peak)
             converged = changes[-1] <= tol
             if converged and periods >= min_periods:
                 break
         previous = current
+        if every_sleeper:
+            previous_all[:] = record
 
     return TimeDomainSolution(
         times=times,
@@ -267,7 +312,9 @@ def simulate_time_domain(
         passage=passage,
         foundation=foundation,
         step_error=step_error,
-        **ring_outputs(mesh, foundation, states, rates),
+        **ring_outputs(mesh, first_law, states, rates),
         sleeper_history=history[:periods].copy(),
         final_state=(u.copy(), v.copy()),
+        **recorder.outputs(law, record),
+        wagons=int(wagons),
     )

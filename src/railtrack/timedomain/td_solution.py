@@ -54,6 +54,25 @@ class TimeDomainSolution:
         Ring displacements and velocities at the end of the last period
         [m, rad], [m/s, rad/s]: the wheels are back at their t = 0 places,
         so this is a valid ``start`` for another run.
+    rail_seat_loads, foundation_forces : ndarray, shape (steps_per_period, n_sleepers)
+        Over the last period, for every ring sleeper i: the pad force
+        k1_i (w_i - w_r) + eta1_i (w_i - w_r)' and the force -f_i(w_i, w_i') on
+        its foundation, positive in compression [N]
+        (`railtrack.timedomain.ring_fields`); column 0 is `rail_seat_load`,
+        `foundation_force`.  The sleepers' own displacements are
+        `sleeper_displacements`.
+    bending_moments_above_sleepers, bending_moments_midspan : ndarray
+        Shape (steps_per_period, n_sleepers).
+        Rail moment EI w'' above sleeper i (x = i L) and at the mid-span
+        between sleepers i and i + 1 (x = (i + 1/2) L), sagging positive
+        [N m]; column 0 is `bending_moment_above_sleeper`, `bending_moment_midspan`.
+    wagons : int
+        Wagons on the ring; its sleepers number wagons x H / L and `passage`
+        holds the tiled train (a period of wagons x H / v).
+
+    A `SleeperCell` run keeps the cell in `foundation`; ring sleeper i is its
+    sleeper i mod N.  `contact_fraction` gives each sleeper's share of the
+    period on its ballast.
     """
 
     times: np.ndarray
@@ -75,3 +94,21 @@ class TimeDomainSolution:
     foundation_force: np.ndarray | None = None
     sleeper_history: np.ndarray | None = None
     final_state: tuple[np.ndarray, np.ndarray] | None = None
+    rail_seat_loads: np.ndarray | None = None
+    foundation_forces: np.ndarray | None = None
+    bending_moments_above_sleepers: np.ndarray | None = None
+    bending_moments_midspan: np.ndarray | None = None
+    wagons: int = 1
+
+    def contact_fraction(self, threshold: float = 0.0) -> np.ndarray:
+        """Share of the last period during which each ring sleeper's foundation pushes [-].
+
+        The fraction of the steps with `foundation_forces` > `threshold` [N]
+        (`railtrack.timedomain.ring_cell.contact_fraction`), shape (n_sleepers,):
+        1 on the ballast all period, 0 hanging all period.
+        """
+        from .ring_cell import contact_fraction
+
+        if self.foundation_forces is None:
+            raise ValueError("this solution has no per-sleeper foundation forces")
+        return contact_fraction(self.foundation_forces, threshold)
