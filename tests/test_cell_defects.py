@@ -16,7 +16,7 @@ SOUND = rt.LinearFoundation(20e6, 0.2e6)
 
 
 def peak_seat_loads(n, gap=1e-3):
-    """Largest rail-seat load [N] of the hanging sleeper's two neighbours on each side and itself."""
+    """Largest rail-seat load [N] of the hanging sleeper and two neighbours on each side."""
     at = n // 2
     cell = rt.SleeperCell.identical(PAPER, SOUND, n).with_sleeper(
         at, foundation=rt.GapFoundation(gap, 20e6, 0.2e6))

@@ -59,7 +59,8 @@ class CellOperators(NamedTuple):
     load: np.ndarray         # g_n, (m+1, N) [N]
 
 
-def cell_operators(passage: Passage, pad_stiffness, pad_damping, omega) -> CellOperators:
+def cell_operators(passage: Passage, pad_stiffness, pad_damping, omega, *,
+                   sleeper_weight=None, rail_weight: float = 0.0) -> CellOperators:
     """K1_n, K2_n and g_n of the module docstring, for omega_n >= 0, in sleeper coordinates.
 
     Parameters
@@ -70,6 +71,15 @@ def cell_operators(passage: Passage, pad_stiffness, pad_damping, omega) -> CellO
         k1_j > 0 [N/m] and eta1_j >= 0 [N s/m] of the cell's pads.
     omega : array_like, shape (W,)
         omega_n >= 0 [rad/s].
+    sleeper_weight : array_like, shape (N,), optional
+        M_j g [N], the sleepers' self-weight (default none, as the paper).
+    rail_weight : float
+        rho S g [N/m], the rail's self-weight (default 0).
+
+    Self-weight is static: it enters g_0 alone.  The rail's weight is a
+    uniform load, as the train's mean is (``sum_k Q_k / H`` per metre), so
+    it adds ``rho S g H`` to sum_k Q_k in b_0; the sleepers' weights act on
+    the sleepers, ``p_{j,0} + M_j g``, so g_0 loses ``K2_0 (M g)``.
 
     Returns
     -------
@@ -105,6 +115,12 @@ def cell_operators(passage: Passage, pad_stiffness, pad_damping, omega) -> CellO
          * passage.sleeper_spacing / passage.wagon_length)
     load = b[:, None] * basis[:, :, 0]
     rest = omega == 0.0
+    if np.any(rest) and (rail_weight or sleeper_weight is not None):
+        total = float(passage.train.wagon_load)
+        weight = float(rail_weight) * passage.wagon_length
+        load[rest] *= (total + weight) / total
+        if sleeper_weight is not None:
+            load[rest] -= second[rest].real @ np.asarray(sleeper_weight, dtype=float)
     first[rest] = first[rest].real
     second[rest] = second[rest].real
     load[rest] = load[rest].real

@@ -51,6 +51,14 @@ class SleeperCell:
     foundations : sequence of laws, length N
         Any foundation object of `railtrack.model.foundations` or a callable
         ``f(w, v)`` [N] (w positive upward, f < 0 in compression).
+    gravity : float
+        g >= 0 [m/s^2].  0 (the default, as the paper) leaves out the weight
+        of rail and sleepers: w is then measured from the unloaded track at
+        rest, and a law is stressed only by the train.  With g > 0 (e.g.
+        `railtrack.model.train.STANDARD_GRAVITY`) the rail (rho S g per metre)
+        and each sleeper (M_j g) weigh on the foundations, and w is measured
+        from where each sleeper would touch an unloaded, weightless ballast:
+        a tensionless or hanging sleeper's law then sees its real preload.
 
     Examples
     --------
@@ -64,13 +72,17 @@ class SleeperCell:
     pad_stiffness: np.ndarray
     pad_damping: np.ndarray
     foundations: tuple
+    gravity: float = 0.0
 
     def __post_init__(self) -> None:
+        require_non_negative("gravity", self.gravity, "m/s^2")
+        object.__setattr__(self, "gravity", float(self.gravity))
         for name, unit in (("sleeper_mass", "kg"), ("pad_stiffness", "N/m"),
                            ("pad_damping", "N s/m")):
             object.__setattr__(self, name, sleeper_array(name, getattr(self, name), unit))
         object.__setattr__(self, "foundations", tuple(as_foundation(f) for f in self.foundations))
-        lengths = {f.name: len(getattr(self, f.name)) for f in fields(self)}
+        lengths = {f.name: len(getattr(self, f.name)) for f in fields(self)
+                   if f.name != "gravity"}
         if len(set(lengths.values())) != 1:
             raise ValueError(f"a SleeperCell needs one value per sleeper in every field; "
                              f"got lengths {lengths}")
@@ -81,12 +93,17 @@ class SleeperCell:
         return int(self.sleeper_mass.size)
 
     @classmethod
-    def identical(cls, passage: Passage, foundation, sleepers: int) -> "SleeperCell":
+    def identical(cls, passage: Passage, foundation, sleepers: int,
+                  gravity: float = 0.0) -> "SleeperCell":
         """N copies of the passage's sleeper and pad on one law."""
         n = cell_size(sleepers)
         return cls(*(np.full(n, float(value)) for value in (
             passage.sleeper_mass, passage.pad_stiffness, passage.pad_damping)),
-            (as_foundation(foundation),) * n)
+            (as_foundation(foundation),) * n, gravity)
+
+    def weights(self, passage: Passage) -> tuple[np.ndarray, float]:
+        """(M_j g [N] per sleeper, rho S g [N/m] of the rail); zeros without gravity."""
+        return self.sleeper_mass * self.gravity, float(passage.rail_linear_mass) * self.gravity
 
     def with_sleeper(self, index: int, *, foundation=None, **changes: float) -> "SleeperCell":
         """A copy with sleeper `index` changed: its ``foundation`` law and/or mass, pad fields."""

@@ -116,7 +116,9 @@ def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: floa
     samples = default_samples(m) if samples is None else samples
     require_jacobian_samples(samples, m)
     omega = passage.fundamental_frequency * np.arange(m + 1)
-    ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, omega)
+    sleeper_weight, rail_weight = cell.weights(passage)
+    ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, omega,
+                         sleeper_weight=sleeper_weight, rail_weight=rail_weight)
     if not all(np.all(np.isfinite(x)) for x in ops[1:]):
         raise ValueError("the cell's operators are not finite (eq. 3 overflows); check the "
                          "rail's EI, rho S and L")
@@ -162,5 +164,6 @@ def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: floa
         return np.concatenate([np.conj(x[:, :0:-1]), x], axis=-1)
 
     seat = -cell.sleeper_mass[:, None] * omega**2 * c + force
+    seat[:, 0] += sleeper_weight
     return CellSolution(passage, cell, two_sided(c), two_sided(force), two_sided(seat), m,
                         int(samples), converged, float(norm), steps, np.array(history), message)

@@ -18,6 +18,7 @@ from numpy.typing import ArrayLike
 from ..equations.cell_rail_field import cell_rail_field_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
 from ..model.passage import Passage
+from .cell_static import cell_at_rest
 
 __all__ = ["CellSolution"]
 
@@ -158,6 +159,10 @@ class CellSolution:
         if kinks == "series":
             return ei * self._field(t, x, 2)
         raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
+
+    def at_rest(self):
+        """The same track under its own weight before the train arrives (`cell_at_rest`)."""
+        return cell_at_rest(self.passage, self.cell)
 
     def one_period(self, samples: int = 400) -> np.ndarray:
         """Times over [0, T) [s], for plotting and extremes."""
