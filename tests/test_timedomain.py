@@ -344,14 +344,15 @@ def test_huge_runs_are_refused_before_allocating(elements, steps):
 
 
 def test_long_runs_warn_with_the_estimated_time():
-    # 2.4 million steps fit in memory (1.9 GB) but take ~12 min a period.
+    # 1.2 million steps fit in memory (2.7 GB with every sleeper's outputs)
+    # but take ~4 min a period.
     with pytest.warns(LongRunWarning, match=r"estimated to take \d+ min per period"):
-        check_run_cost(SLEEPERS, 8, 2_400_000, 40)
+        check_run_cost(SLEEPERS, 8, 1_200_000, 40)
     began = time.perf_counter()
     with warnings.catch_warnings():
         warnings.simplefilter("error", LongRunWarning)  # stop the call at the warning
         with pytest.raises(LongRunWarning):
-            simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 8, 2_400_000)
+            simulate_time_domain(TRACK, TRAIN, LinearFoundation.paper(), 8, 1_200_000)
     assert time.perf_counter() - began < 1.0
     with warnings.catch_warnings():
         warnings.simplefilter("error", LongRunWarning)

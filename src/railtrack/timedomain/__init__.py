@@ -5,8 +5,9 @@ stepped by Newmark's scheme (`newmark`) until each period repeats the last
 (`simulation`, whose `simulate_time_domain` is the entry point); the time
 step and its error (`timestep`), the run's cost estimated beforehand
 (`runcost`), the ring started from a harmonic-balance solution
-(`ring_state`), its forces and moments (`ring_outputs`), its result
-(`td_solution`) and the spectrum of a record (`spectrum`).
+(`ring_state`), its forces and moments (`ring_outputs`; every sleeper's,
+`ring_fields`), a cell of differing sleepers laid along it (`ring_cell`),
+its result (`td_solution`) and the spectrum of a record (`spectrum`).
 
 Imports: `railtrack.model`, `railtrack.equations` and `railtrack.solvers`.
 """

@@ -73,7 +73,11 @@ def moment_operators(mesh: RingMesh) -> tuple[sp.csr_matrix, sp.csr_matrix]:
 
 
 class SleeperRecorder:
-    """Records, step by step, what the per-sleeper outputs need; `outputs` finishes them."""
+    """Records, step by step, what the per-sleeper outputs need; `outputs` finishes them.
+
+    Four floats per sleeper and step: its velocity, its rail-seat load and
+    the two moments (`railtrack.timedomain.runcost` counts them).
+    """
 
     def __init__(self, mesh: RingMesh, steps: int):
         self.mesh = mesh
@@ -81,30 +85,30 @@ class SleeperRecorder:
         self.moments = sp.vstack([above, midspan]).tocsr()
         n = mesh.n_sleepers
         self.sleeper_velocity = np.empty((steps, n))
-        self.compression = np.empty((steps, n))
-        self.compression_rate = np.empty((steps, n))
+        self.seat = np.empty((steps, n))
         self.moment = np.empty((steps, 2 * n))
 
     def record(self, n: int, u: np.ndarray, v: np.ndarray) -> None:
         """Store step n's state (u, u') [m, rad], [m/s, rad/s]."""
-        sleepers, rail = self.mesh.sleeper_dofs, self.mesh.rail_dofs
+        mesh = self.mesh
+        sleepers, rail = mesh.sleeper_dofs, mesh.rail_dofs
         self.sleeper_velocity[n] = v[sleepers]
-        self.compression[n] = u[sleepers] - u[rail]
-        self.compression_rate[n] = v[sleepers] - v[rail]
+        self.seat[n] = (mesh.pad_stiffness * (u[sleepers] - u[rail])
+                        + mesh.pad_damping * (v[sleepers] - v[rail]))
         self.moment[n] = self.moments @ u
 
     def outputs(self, law, displacements: np.ndarray) -> dict[str, np.ndarray]:
         """The per-sleeper arrays, shape (steps, n_sleepers), given the sleepers' w [m].
 
         `law` is the ring's foundation (`railtrack.timedomain.ring_cell.RingLaw`
-        or one law for every sleeper), called once on the whole record.
+        or one law for every sleeper), called once on the whole record.  The
+        arrays are the recorder's own (no copies): record no further step.
         """
-        mesh, n = self.mesh, self.mesh.n_sleepers
+        n = self.mesh.n_sleepers
         force = np.asarray(law.force(displacements, self.sleeper_velocity), dtype=float)
-        return dict(
-            rail_seat_loads=mesh.pad_stiffness * self.compression
-            + mesh.pad_damping * self.compression_rate,
-            foundation_forces=-np.broadcast_to(force, displacements.shape).copy(),
-            bending_moments_above_sleepers=self.moment[:, :n].copy(),
-            bending_moments_midspan=self.moment[:, n:].copy(),
-        )
+        return {
+            "rail_seat_loads": self.seat,
+            "foundation_forces": -np.broadcast_to(force, displacements.shape),
+            "bending_moments_above_sleepers": self.moment[:, :n],
+            "bending_moments_midspan": self.moment[:, n:],
+        }

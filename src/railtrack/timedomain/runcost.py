@@ -50,10 +50,14 @@ TYPICAL_PERIODS = 5
 # 1.2 to 2.6 times the linear law's times.
 _SECONDS_PER_STEP = 1.5e-4
 _SECONDS_PER_RESPONSE_ENTRY = 2.5e-9
-# Per step: two records of the sleepers (in the 16 n_sleepers bytes), five
+# Per step and sleeper: its displacement twice (the period and its copy),
+# and four floats of `ring_fields.SleeperRecorder` and one of the foundation
+# forces, the output of every sleeper, and for a cell the previous period's
+# record (the 8 * 8 n_sleepers bytes); five
 # 8-byte arrays (times, rail twice, two periods of sleeper 0) and 8
 # wheel-load entries (int64 DOF and float64 value), twice for their
 # temporaries.
+_BYTES_PER_SLEEPER_STEP = 8 * 8
 _BYTES_PER_LOAD_STEP = 2 * 8 * (8 + 8) + 5 * 8
 # Per DOF: the sparse M, C, K, the Newmark matrix, its history product and
 # LU factors, ~100 bytes per matrix (generous).
@@ -94,12 +98,12 @@ def estimate_run_cost(n_sleepers: int, elements_per_span: int, steps_per_period:
     --------
     >>> cost = estimate_run_cost(30, 8, 2400)
     >>> f"{cost.memory / 1e6:.1f} MB, {cost.seconds_per_period:.1f} s per period"
-    '3.1 MB, 0.5 s per period'
+    '6.6 MB, 0.5 s per period'
     """
     n_dofs = (2 * elements_per_span + 1) * n_sleepers
     response = float(n_dofs) * n_sleepers  # entries of A^-1 U, and of U itself
     memory = (
-        float(steps_per_period) * (16.0 * n_sleepers + _BYTES_PER_LOAD_STEP)
+        float(steps_per_period) * (_BYTES_PER_SLEEPER_STEP * n_sleepers + _BYTES_PER_LOAD_STEP)
         + 2 * 8.0 * response
         + float(n_dofs) * _BYTES_PER_DOF
     )
