@@ -108,7 +108,7 @@ class SleeperRecorder:
         force = np.asarray(law.force(displacements, self.sleeper_velocity), dtype=float)
         return {
             "rail_seat_loads": self.seat,
-            "foundation_forces": -np.broadcast_to(force, displacements.shape),
+            "foundation_forces": 0.0 - np.broadcast_to(force, displacements.shape),  # no -0.0
             "bending_moments_above_sleepers": self.moment[:, :n],
             "bending_moments_midspan": self.moment[:, n:],
         }

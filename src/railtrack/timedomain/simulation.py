@@ -200,6 +200,17 @@ def simulate_time_domain(
     >>> result = simulate_time_domain(Track.paper(), Train.paper(), LinearFoundation.paper(), 2, 480)
     >>> result.converged, round(1e3 * float(result.sleeper_displacement.min()), 2)
     (True, -1.13)
+
+    Sleeper 15 of every 30 hanging 1 mm above its ballast:
+
+    >>> from railtrack import Passage
+    >>> from railtrack.model.cell import SleeperCell
+    >>> from railtrack.model.gap import GapFoundation
+    >>> cell = SleeperCell.identical(Passage.paper(), LinearFoundation.paper(), 30).with_sleeper(
+    ...     15, foundation=GapFoundation(1e-3, 20e6, 0.2e6))
+    >>> hanging = simulate_time_domain(Track.paper(), Train.paper(), cell, 2, 480)
+    >>> hanging.foundation_forces.shape, hanging.contact_fraction()[14:17].round(2)
+    ((480, 30), array([0.57, 0.16, 0.59]))
     """
     passage = Passage(track, ring_train(train, wagons))
     elements_per_span = _require_count("elements_per_span", elements_per_span)
