@@ -61,7 +61,8 @@ def test_identical_cell_is_the_uniform_ring_bit_for_bit():
         assert np.array_equal(getattr(plain, name), getattr(cell, name)), name
     # The per-sleeper outputs are computed apart from sleeper 0's (ring_fields
     # against ring_outputs): column 0 is the same quantity.
-    for many, one in (("rail_seat_loads", "rail_seat_load"), ("foundation_forces", "foundation_force"),
+    for many, one in (("rail_seat_loads", "rail_seat_load"),
+                      ("foundation_forces", "foundation_force"),
                       ("bending_moments_above_sleepers", "bending_moment_above_sleeper"),
                       ("bending_moments_midspan", "bending_moment_midspan")):
         np.testing.assert_allclose(getattr(plain, many)[:, 0], getattr(plain, one),
