@@ -61,6 +61,7 @@ from .model.passage import Passage
 from .model.cell import SleeperCell
 from .model.gap import GapFoundation
 from .solvers.cell_solution import CellSolution
+from .studies.random_support import RandomSupport, random_support
 from .model.track import Track
 from .model.train import Train
 
@@ -89,6 +90,8 @@ __all__ = [
     "GapFoundation",
     "SleeperCell",
     "CellSolution",
+    "random_support",
+    "RandomSupport",
     "as_foundation",
     "solve",
     "METHODS",

@@ -1,0 +1,157 @@
+"""Random support: a Monte Carlo over cells whose sleepers' ballast stiffness scatters (issue 19).
+
+Each draw is a cell of N sleepers on the same law, each sleeper's stiffness
+multiplied by its own factor X_j, drawn independently from a lognormal
+distribution of mean 1 and coefficient of variation ``variation``
+(``ln X ~ Normal(-s^2/2, s^2)``, ``s^2 = ln(1 + variation^2)``).  Every
+stiffness field of the law is scaled (`scaled_law`), dampings are kept.
+The cell repeats every N sleepers: a draw stands for a long track whose
+pattern repeats, not for an endless random one, and N should be large
+enough that the extremes no longer change with it.  The draws come from
+``numpy.random.default_rng(seed)``, so a seed gives the same cells on
+every machine.
+
+For each draw the result keeps the largest rail-seat load over the
+sleepers and the period, and the rail's largest sagging moment along the
+cell: the moment under each wheel, at 8 points a span (the sagging peak
+of a span is under a wheel, `railtrack.equations.moment`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..model.cell import SleeperCell
+from ..model.foundations import as_foundation
+from ..model.passage import Passage
+from ..solvers.cell_auto import solve_track_cell
+
+__all__ = ["RandomSupport", "random_support", "scaled_law", "lognormal_factors"]
+
+POINTS_PER_SPAN = 8
+TIMES = 512
+
+
+def lognormal_factors(variation: float, shape, rng: np.random.Generator) -> np.ndarray:
+    """Lognormal factors of mean 1 and coefficient of variation `variation` [-]."""
+    if not 0.0 <= variation < 10.0:
+        raise ValueError(f"variation (coefficient of variation) must be in [0, 10); "
+                         f"got {variation!r}")
+    sigma = np.sqrt(np.log1p(variation**2))
+    return rng.lognormal(-0.5 * sigma**2, sigma, size=shape)
+
+
+def scaled_law(law, factor: float):
+    """`law` with every field whose name contains "stiffness" multiplied by `factor`.
+
+    Examples
+    --------
+    >>> from railtrack.model.foundations import CubicFoundation
+    >>> scaled_law(CubicFoundation(20e6, 2e13, 0.8, 2e5), 0.5).stiffness
+    10000000.0
+    """
+    law = as_foundation(law)
+    if not dataclasses.is_dataclass(law):
+        raise TypeError(f"random_support scales a law's stiffness fields; a "
+                        f"{type(law).__name__} has none (use a package law)")
+    changes = {f.name: getattr(law, f.name) * factor for f in dataclasses.fields(law)
+               if "stiffness" in f.name}
+    if not changes:
+        raise TypeError(f"{type(law).__name__} has no field named *stiffness* to scale")
+    return dataclasses.replace(law, **changes)
+
+
+@dataclass(frozen=True)
+class RandomSupport:
+    """Draws of a random-support Monte Carlo.
+
+    Attributes
+    ----------
+    variation : float
+        Coefficient of variation of the stiffness factors [-].
+    factors : ndarray, shape (draws, N)
+        Each draw's stiffness factor per sleeper [-].
+    peak_seat_load : ndarray, shape (draws,)
+        Largest rail-seat load over the cell's sleepers and the period [N].
+    peak_moment : ndarray, shape (draws,)
+        Largest sagging rail moment along the cell [N m].
+    converged : ndarray of bool, shape (draws,)
+    harmonics : ndarray of int, shape (draws,)
+    """
+
+    variation: float
+    factors: np.ndarray
+    peak_seat_load: np.ndarray
+    peak_moment: np.ndarray
+    converged: np.ndarray
+    harmonics: np.ndarray
+
+    def quantiles(self, q=(0.5, 0.95, 0.99)) -> dict[str, np.ndarray]:
+        """Quantiles of the peak seat load [N] and moment [N m] over the converged draws."""
+        ok = self.converged
+        return {"peak_seat_load": np.quantile(self.peak_seat_load[ok], q),
+                "peak_moment": np.quantile(self.peak_moment[ok], q)}
+
+
+def _peaks(solution) -> tuple[float, float]:
+    passage = solution.passage
+    times = solution.one_period(TIMES)
+    seat = float(solution.rail_seat_load(times).max())
+    span = passage.sleeper_spacing
+    x = np.arange(solution.sleepers * POINTS_PER_SPAN) * span / POINTS_PER_SPAN
+    wheels = np.asarray(passage.axle_positions, dtype=float)
+    under = (x[:, None] + wheels[None, :]) / float(passage.speed)    # wheel j above x
+    moment = solution.rail_bending_moment(np.mod(under, solution.period), x[:, None])
+    return seat, float(moment.max())
+
+
+def random_support(track, train, foundation, *, sleepers: int = 30, variation: float = 0.3,
+                   draws: int = 100, seed: int = 0, harmonics="auto") -> RandomSupport:
+    """Monte Carlo over cells of `sleepers` sleepers with lognormal ballast stiffness.
+
+    Parameters
+    ----------
+    track, train : Track, Train
+        Scalar fields; every sleeper has the track's mass and pad.
+    foundation : law
+        A package law (a dataclass with a ``*stiffness*`` field), scaled per sleeper.
+    sleepers : int
+        N, the cell's size.
+    variation : float
+        Coefficient of variation of each sleeper's stiffness factor [-].
+    draws : int
+        Number of cells drawn.
+    seed : int
+        For ``numpy.random.default_rng``.
+    harmonics : int or "auto"
+        As `railtrack.solve`.
+
+    Returns
+    -------
+    RandomSupport
+
+    Examples
+    --------
+    >>> import railtrack as rt
+    >>> sample = random_support(rt.Track.paper(), rt.Train.paper(),
+    ...                         rt.LinearFoundation(20e6, 2e5), sleepers=10, draws=3)
+    >>> sample.peak_seat_load.shape, bool(sample.converged.all())
+    ((3,), True)
+    """
+    passage = Passage(track, train)
+    rng = np.random.default_rng(seed)
+    factors = lognormal_factors(variation, (int(draws), int(sleepers)), rng)
+    base = SleeperCell.identical(passage, foundation, sleepers)
+    seat, moment = np.full(draws, np.nan), np.full(draws, np.nan)
+    converged, used = np.zeros(draws, bool), np.zeros(draws, int)
+    for k, row in enumerate(factors):
+        cell = dataclasses.replace(
+            base, foundations=tuple(scaled_law(law, x) for law, x in zip(base.foundations, row)))
+        solution = solve_track_cell(track, train, cell, harmonics)
+        converged[k], used[k] = solution.converged, solution.harmonics
+        if solution.converged:
+            seat[k], moment[k] = _peaks(solution)
+    return RandomSupport(float(variation), factors, seat, moment, converged, used)
