@@ -13,9 +13,10 @@ moment above every sleeper and at every mid-span.  The truths it is held to:
 * harmonic balance's moment along the rail, `Solution.rail_bending_moment`,
   for every sleeper and mid-span of a uniform ring;
 * statics: over a period the foundations carry the train's weight on the
-  ring, whatever the laws (the mean of M u'' and C u' over a period of a
-  periodic Newmark solution vanishes, and the beam's and pads' forces are
-  internal).
+  ring (and the track's own, with gravity), whatever the laws (the mean of
+  M u'' and C u' over a period of a periodic Newmark solution vanishes, and
+  the beam's and pads' forces are internal); for linear laws the self-weight adds `cell_at_rest`'s static
+  state, solved from the cell's harmonic-balance operators at omega = 0.
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ from railtrack.equations.cell_linear import LinearCell, cell_linear_coefficients
 from railtrack.model.cell import SleeperCell
 from railtrack.model.gap import GapFoundation
 from railtrack.model.passage import Passage
+from railtrack.solvers.cell_static import cell_at_rest
 from railtrack.timedomain.ring_cell import contact_fraction
 from railtrack.timedomain.simulation import simulate_time_domain
 
@@ -137,17 +139,44 @@ def test_a_cell_that_does_not_tile_the_ring_is_refused():
         simulate_time_domain(TRACK, TRAIN, cell, 1, 120)
 
 
-def test_foundations_carry_the_weight_on_a_two_wagon_ring_with_a_hanging_sleeper():
+@pytest.mark.parametrize("gravity", [0.0, 9.81])
+def test_foundations_carry_the_weight_on_a_two_wagon_ring_with_a_hanging_sleeper(gravity):
     # N = 4 fits only the ring of two wagons (60 sleepers); sleeper 2 hangs 0.5 mm.
     hanging = GapFoundation(0.5e-3, 20e6, 0.2e6)
-    cell = SleeperCell.identical(PASSAGE, SOUND, 4).with_sleeper(2, foundation=hanging)
+    cell = SleeperCell.identical(PASSAGE, SOUND, 4, gravity=gravity).with_sleeper(
+        2, foundation=hanging)
     ring = simulate_time_domain(TRACK, TRAIN, cell, 2, 480, wagons=2)
     assert ring.converged and ring.wagons == 2
     assert ring.foundation_forces.shape == (480, 60)
-    weight = 2 * sum(PASSAGE.axle_loads)
+    length = 2 * float(PASSAGE.wagon_length)
+    weight = (2 * sum(PASSAGE.axle_loads) + gravity * float(PASSAGE.rail_linear_mass) * length
+              + gravity * 60 * float(PASSAGE.sleeper_mass))
     # Measured within 2e-11 of the weight: the periodicity tolerance and Newton's.
     assert ring.foundation_forces.sum(axis=1).mean() == pytest.approx(weight, rel=1e-8)
     # The hanging sleepers (2, 6, 10, ...) only push, and not all the time.
     gap = ring.foundation_forces[:, 2::4]
     assert gap.min() >= 0.0 and 0.0 < contact_fraction(gap).max() < 1.0
     np.testing.assert_array_equal(ring.contact_fraction()[2::4], contact_fraction(gap))
+
+
+def test_self_weight_of_a_linear_cell_adds_its_static_state_at_rest():
+    cell = SleeperCell.identical(PASSAGE, SOUND, 2).with_sleeper(1, sleeper_mass=250.0)
+    heavy = SleeperCell(cell.sleeper_mass, cell.pad_stiffness, cell.pad_damping,
+                        cell.foundations, 9.81)
+    light = simulate_time_domain(TRACK, TRAIN, cell, 2, 480)
+    weighed = simulate_time_domain(TRACK, TRAIN, heavy, 2, 480)
+    # Linear laws superpose: the weight adds the static state of the cell
+    # under its own weight, which `cell_at_rest` solves from the cell's
+    # harmonic-balance operators at omega = 0 (nothing shared with the ring).
+    rest = cell_at_rest(PASSAGE, heavy)
+    assert rest.converged
+    for name, static in (("sleeper_displacements", rest.sleeper_displacement),
+                         ("rail_seat_loads", rest.rail_seat_load),
+                         ("foundation_forces", rest.foundation_force)):
+        expected = np.broadcast_to(np.tile(static, RING // 2), (480, RING))
+        difference = getattr(weighed, name) - getattr(light, name)
+        # Measured within 3e-12 of the static values (round-off and Newton).
+        np.testing.assert_allclose(difference, expected, rtol=1e-7, err_msg=name)
+    # The heavier sleeper matters (the rail passes most of its extra 1.5 kN
+    # to its neighbours): 140 N more on its foundation, 1e5 times the tolerance.
+    assert rest.foundation_force[1] > rest.foundation_force[0] + 100.0

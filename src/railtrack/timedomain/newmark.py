@@ -205,10 +205,11 @@ class NewmarkStepper:
     ``A u_{n+1} + U g = b`` with A = K + (2/dt) C + (4/dt^2) M (reference
     foundation included) and b from the state at the start of the step and
     the wheel loads at its end.  The reference (k0, c0) is one pair of
-    floats or a pair of arrays, one entry per sleeper (a cell).
+    floats or a pair of arrays, one entry per sleeper (a cell); `constant`,
+    loads that do not move (a cell's self-weight, shape (n_dofs,)) [N].
     """
 
-    def __init__(self, mesh, foundation, reference, dt, loads, tol, iterations):
+    def __init__(self, mesh, foundation, reference, dt, loads, tol, iterations, constant=None):
         self.k0, self.c0 = reference
         stiffness = mesh.stiffness + _sleeper_projector(mesh, self.k0)
         damping = mesh.damping + _sleeper_projector(mesh, self.c0)
@@ -224,6 +225,7 @@ class NewmarkStepper:
         self.load_dofs, self.load_values = loads
         self.tol, self.iterations = tol, iterations
         self.force = np.zeros(mesh.n_sleepers)
+        self.constant = constant
 
     def _remainder(self, offset: np.ndarray):
         """g(w) = f(w, w') - k0 w - c0 w' and dg/dw, with w' = (2/dt) w - offset."""
@@ -242,6 +244,8 @@ class NewmarkStepper:
         dt, sleepers = self.dt, self.mesh.sleeper_dofs
         rhs = self.history @ np.concatenate([u, v, a])
         np.add.at(rhs, self.load_dofs[load_index], self.load_values[load_index])
+        if self.constant is not None:
+            rhs += self.constant
         free = self.system.lu.solve(rhs)
         remainder = self._remainder((2.0 / dt) * u[sleepers] + v[sleepers])
         _, self.force = self.system.solve_sleepers(

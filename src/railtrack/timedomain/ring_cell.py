@@ -132,6 +132,23 @@ class RingCell:
         """(M_i, k1_i, eta1_i) for `railtrack.timedomain.fem.ring_mesh`."""
         return self.sleeper_mass, self.pad_stiffness, self.pad_damping
 
+    def self_weight(self, mesh) -> np.ndarray | None:
+        """Constant nodal loads of the rail's and sleepers' weight [N]; None without gravity.
+
+        The rail's rho S g per metre is a uniform load: its consistent nodal
+        loads are -rho S g h / 2 and -+rho S g h^2 / 12 at each end of an
+        element, so on the closed ring every rail node carries -rho S g h and
+        the moments cancel.  Sleeper i carries -M_i g (`SleeperCell.weights`).
+        """
+        gravity = float(getattr(self.cell, "gravity", 0.0))
+        if gravity == 0.0:
+            return None
+        load = np.zeros(mesh.n_dofs)
+        load[0:2 * mesh.n_nodes:2] = (-float(mesh.passage.rail_linear_mass) * gravity
+                                      * mesh.element_length)
+        load[mesh.sleeper_dofs] = -self.sleeper_mass * gravity
+        return load
+
     def stand_in(self, passage: Passage, w: np.ndarray) -> tuple[Passage, LinearFoundation]:
         """A uniform track for the time-step error estimate: the cell's mean sleeper and pad
         on the mean tangent of the laws at the ring's sleeper displacements `w` [m].

@@ -127,15 +127,25 @@ def check_ring_state(mesh: RingMesh, state) -> tuple[np.ndarray, np.ndarray]:
     return u, v
 
 
-def consistent_acceleration(mesh: RingMesh, foundation, u: np.ndarray, v: np.ndarray) -> np.ndarray:
+def _loads_at_rest(mesh: RingMesh, constant: np.ndarray | None) -> np.ndarray:
+    """P(0): the wheels at their t = 0 places, plus the constant loads (self-weight) if any [N]."""
+    dofs, values = wheel_load_entries(mesh, [0.0])
+    load = np.zeros(mesh.n_dofs)
+    np.add.at(load, dofs[0], values[0])
+    if constant is not None:
+        load += constant
+    return load
+
+
+def consistent_acceleration(mesh: RingMesh, foundation, u: np.ndarray, v: np.ndarray,
+                            constant: np.ndarray | None = None) -> np.ndarray:
     """u'' at t = 0 from the equation of motion M u'' = P(0) - C u' - K u - U f [m/s^2].
 
     Newmark's average-acceleration step uses u'' at the start of the step;
     an acceleration inconsistent with (u, u') would be a spurious impulse.
+    `constant` adds loads that do not move (a cell's self-weight) [N].
     """
-    dofs, values = wheel_load_entries(mesh, [0.0])
-    load = np.zeros(mesh.n_dofs)
-    np.add.at(load, dofs[0], values[0])
+    load = _loads_at_rest(mesh, constant)
     sleepers = mesh.sleeper_dofs
     force, _, _ = evaluate_law(foundation, u[sleepers], v[sleepers])
     load[sleepers] -= force
@@ -143,23 +153,23 @@ def consistent_acceleration(mesh: RingMesh, foundation, u: np.ndarray, v: np.nda
     return spla.splu(mesh.mass.tocsc()).solve(load)
 
 
-def initial_state(mesh: RingMesh, foundation, start, k0: float, tol: float, iterations: int):
+def initial_state(mesh: RingMesh, foundation, start, k0: float, tol: float, iterations: int,
+                  constant: np.ndarray | None = None):
     """(u, u', u'') of the ring at t = 0 for a `start` of `simulate_time_domain`.
 
     ``"static"``: static equilibrium under the wheels at t = 0, at rest;
     ``"rest"``: the undeformed track with the wheels suddenly applied;
     a `Solution`: its state at t = 0 (`ring_state_from_solution`); a pair
     (u, v): that state.  The acceleration is the one the equation of motion
-    gives (zero for the static state).
+    gives (zero for the static state).  `constant` adds loads that do not
+    move (a cell's self-weight) [N]; `k0` may be one value per sleeper.
     """
     from .newmark import NonFiniteLawError, static_state
 
     if isinstance(start, str):
         if start not in ("static", "rest"):
             raise ValueError(f"start must be 'static', 'rest', a Solution or (u, v); got {start!r}")
-        dofs, values = wheel_load_entries(mesh, [0.0])
-        load = np.zeros(mesh.n_dofs)
-        np.add.at(load, dofs[0], values[0])
+        load = _loads_at_rest(mesh, constant)
         zero = np.zeros(mesh.n_dofs)
         if start == "rest":
             # The wheels are put on the track at rest: it starts accelerating.
@@ -176,4 +186,4 @@ def initial_state(mesh: RingMesh, foundation, start, k0: float, tol: float, iter
         u, v = ring_state_from_solution(mesh, start)
     else:
         u, v = check_ring_state(mesh, start)
-    return u, v, consistent_acceleration(mesh, foundation, u, v)
+    return u, v, consistent_acceleration(mesh, foundation, u, v, constant)

@@ -119,7 +119,10 @@ def simulate_time_domain(
         cell sleeper i mod N, with that sleeper's mass, pad stiffness, pad
         damping and law (`railtrack.timedomain.ring_cell`).  N must divide
         the ring's wagons x H / L sleepers.  Each distinct law object is
-        called once per evaluation, on all the sleepers it carries.
+        called once per evaluation, on all the sleepers it carries.  A cell
+        with ``gravity > 0`` adds the rail's and sleepers' weight as constant
+        loads (w is then measured from the unloaded, weightless track, as in
+        `SleeperCell`).
     elements_per_span : int
         Hermite beam elements per sleeper span, >= 1.
     steps_per_period : int
@@ -246,9 +249,11 @@ def simulate_time_domain(
     # per sleeper 2 Q L / H on the pad and the reference foundation in series.
     scale = float(passage.static_load_per_sleeper) * (1.0 / k0 + 1.0 / pad)
     newton_abs = newton_tol * scale
+    weight = None if cell is None else cell.self_weight(mesh)
 
     try:
-        u, v, a = initial_state(mesh, law, start, reference[0], newton_abs, max_newton_iterations)
+        u, v, a = initial_state(mesh, law, start, reference[0], newton_abs, max_newton_iterations,
+                                weight)
     except NonFiniteLawError as error:
         raise NonFiniteLawError(f"{error}{_FINITE}") from None
     if cell is None:
@@ -257,7 +262,8 @@ def simulate_time_domain(
         estimated, linearized_at = cell.stand_in(passage, u[mesh.sleeper_dofs]), 0.0
     step_error = check_step_error(*estimated, linearized_at, steps_per_period,
                                   elements_per_span, warn_step_error)
-    stepper = NewmarkStepper(mesh, law, reference, dt, loads, newton_abs, max_newton_iterations)
+    stepper = NewmarkStepper(mesh, law, reference, dt, loads, newton_abs, max_newton_iterations,
+                             weight)
     every_sleeper = cell is not None and not cell.uniform
     recorder = SleeperRecorder(mesh, n_steps)
 
