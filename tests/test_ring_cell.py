@@ -15,8 +15,9 @@ moment above every sleeper and at every mid-span.  The truths it is held to:
 * statics: over a period the foundations carry the train's weight on the
   ring (and the track's own, with gravity), whatever the laws (the mean of
   M u'' and C u' over a period of a periodic Newmark solution vanishes, and
-  the beam's and pads' forces are internal); for linear laws the self-weight adds `cell_at_rest`'s static
-  state, solved from the cell's harmonic-balance operators at omega = 0.
+  the beam's and pads' forces are internal); for linear laws the
+  self-weight adds `cell_at_rest`'s static state, solved from the cell's
+  harmonic-balance operators at omega = 0.
 """
 
 from __future__ import annotations
