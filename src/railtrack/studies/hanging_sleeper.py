@@ -1,0 +1,97 @@
+"""A hanging sleeper in a cell: the quantities a track engineer reads (issue 19, section 3).
+
+`hanging_cell` builds the cell: N sound sleepers on one linear law, sleeper
+`at` hanging `gap` above the same ballast (`railtrack.GapFoundation`).
+`sleeper_extremes` reads per sleeper the largest rail-seat load and
+foundation force, the lowest displacement and the share of the period in
+contact; `moment_extremes` the rail's bending moment above a sleeper and at
+the mid-spans beside it.  Both read a `railtrack.CellSolution` or the ring's
+`railtrack.TimeDomainSolution` alike, so that the two methods are compared
+on the same quantities.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from ..model.cell import SleeperCell
+from ..model.foundations import LinearFoundation
+from ..model.gap import GapFoundation
+from ..model.passage import Passage
+from ..solvers.cell_solution import CellSolution
+
+__all__ = ["hanging_cell", "SleeperExtremes", "sleeper_extremes", "moment_extremes"]
+
+SAMPLES = 2048
+"""Instants per period at which a harmonic-balance solution is read."""
+
+
+def hanging_cell(passage: Passage, law: LinearFoundation, gap: float, *, sleepers: int = 30,
+                 at: int | None = None, gravity: float = 0.0) -> SleeperCell:
+    """N sleepers of the passage on `law`, sleeper `at` (default N // 2) hanging `gap` [m] above it.
+
+    ``gap = 0`` gives the sound cell (every sleeper on `law`).
+
+    Examples
+    --------
+    >>> cell = hanging_cell(Passage.paper(), LinearFoundation(20e6, 2e5), 1e-3, sleepers=4)
+    >>> type(cell.foundations[2]).__name__, cell.foundations[2].gap
+    ('GapFoundation', 0.001)
+    """
+    at = sleepers // 2 if at is None else at
+    cell = SleeperCell.identical(passage, law, sleepers, gravity=gravity)
+    if gap == 0:
+        return cell
+    return cell.with_sleeper(at, foundation=GapFoundation(gap, law.stiffness, law.damping))
+
+
+class SleeperExtremes(NamedTuple):
+    """Per sleeper, over one period: arrays of shape (N,)."""
+
+    peak_seat_load: np.ndarray       # [N], largest rail-seat load (compression)
+    peak_foundation_force: np.ndarray  # [N], largest force on the foundation (compression)
+    lowest_displacement: np.ndarray  # [m], w positive upward
+    contact_fraction: np.ndarray     # [-], share of the period with foundation force > 0
+
+
+def _histories(solution):
+    """(seat load, foundation force, displacement), each (N, instants), from either method."""
+    if isinstance(solution, CellSolution):
+        t = solution.one_period(SAMPLES)
+        return (solution.rail_seat_load(t), solution.foundation_force(t),
+                solution.sleeper_displacement(t))
+    return (solution.rail_seat_loads.T, solution.foundation_forces.T,
+            solution.sleeper_displacements.T)
+
+
+def sleeper_extremes(solution) -> SleeperExtremes:
+    """Extremes of every sleeper of a `CellSolution` or of the ring's sleepers."""
+    seat, force, displacement = _histories(solution)
+    return SleeperExtremes(seat.max(axis=1), force.max(axis=1), displacement.min(axis=1),
+                           np.mean(force > 0.0, axis=1))
+
+
+def moment_extremes(solution, at: int) -> dict[str, tuple[float, float]]:
+    """(largest sagging, largest hogging) rail moment [N m] above sleeper `at` and mid-spans.
+
+    Keys ``"mid-span before"``, ``"above"``, ``"mid-span after"`` (x = (at - 1/2) L,
+    at L, (at + 1/2) L).  For a `CellSolution` the moment is read at
+    `SAMPLES` instants and at the instants each wheel is there (the sagging
+    peak is a cusp under the wheel); the ring's at its time steps.
+    """
+    if isinstance(solution, CellSolution):
+        passage = solution.passage
+        span = passage.sleeper_spacing
+        x = (at + np.array([-0.5, 0.0, 0.5])) * span
+        under = (x[:, None] + np.asarray(passage.axle_positions)) / float(passage.speed)
+        t = np.concatenate([np.broadcast_to(solution.one_period(SAMPLES), (3, SAMPLES)),
+                            np.mod(under, solution.period)], axis=1)
+        moment = solution.rail_bending_moment(t, x[:, None])
+    else:
+        moment = np.stack([solution.bending_moments_midspan[:, at - 1],
+                           solution.bending_moments_above_sleepers[:, at],
+                           solution.bending_moments_midspan[:, at]])
+    names = ("mid-span before", "above", "mid-span after")
+    return {name: (float(row.max()), float(row.min())) for name, row in zip(names, moment)}
