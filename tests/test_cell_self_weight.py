@@ -49,7 +49,7 @@ def test_a_hanging_sleeper_hangs_on_its_pads_and_its_neighbours_carry_it():
 
 def test_the_foundations_carry_the_train_and_the_track():
     heavy = rt.solve(TRACK, TRAIN, cell(G, gap=0.5e-3), 60)
-    t = heavy.one_period(4096)
+    t = heavy.one_period(4096)[0]
     train = np.sum(TRAIN.axle_loads) * 10 * PAPER.sleeper_spacing / TRAIN.wagon_length
     assert heavy.foundation_force(t).sum(axis=0).mean() == pytest.approx(train + 10 * BAY,
                                                                           rel=1e-6)

@@ -19,7 +19,7 @@ def test_without_scatter_every_draw_is_todays_track():
     sample = rt.random_support(TRACK, TRAIN, SOUND, sleepers=5, variation=0.0, draws=2,
                                harmonics=40)
     today = rt.solve(TRACK, TRAIN, SOUND, 40, stability="off")
-    t = today.one_period(4096)
+    t, _ = today.one_period(4096)
     speed = TRAIN.speed
     under = np.linspace(0.0, 0.6, 9)
     moment = today.rail_bending_moment(under / speed, under).max()

@@ -164,6 +164,7 @@ class CellSolution:
         """The same track under its own weight before the train arrives (`cell_at_rest`)."""
         return cell_at_rest(self.passage, self.cell)
 
-    def one_period(self, samples: int = 400) -> np.ndarray:
-        """Times over [0, T) [s], for plotting and extremes."""
-        return np.linspace(0.0, self.period, samples, endpoint=False)
+    def one_period(self, samples: int = 400) -> tuple[np.ndarray, np.ndarray]:
+        """Times over [0, T) [s] and every sleeper's w there, (samples,) and (N, samples) [m]."""
+        t = np.linspace(0.0, self.period, samples, endpoint=False)
+        return t, self.sleeper_displacement(t)

@@ -59,7 +59,7 @@ class SleeperExtremes(NamedTuple):
 def _histories(solution):
     """(seat load, foundation force, displacement), each (N, instants), from either method."""
     if isinstance(solution, CellSolution):
-        t = solution.one_period(SAMPLES)
+        t = solution.one_period(SAMPLES)[0]
         return (solution.rail_seat_load(t), solution.foundation_force(t),
                 solution.sleeper_displacement(t))
     return (solution.rail_seat_loads.T, solution.foundation_forces.T,
@@ -86,7 +86,7 @@ def moment_extremes(solution, at: int) -> dict[str, tuple[float, float]]:
         span = passage.sleeper_spacing
         x = (at + np.array([-0.5, 0.0, 0.5])) * span
         under = (x[:, None] + np.asarray(passage.axle_positions)) / float(passage.speed)
-        t = np.concatenate([np.broadcast_to(solution.one_period(SAMPLES), (3, SAMPLES)),
+        t = np.concatenate([np.broadcast_to(solution.one_period(SAMPLES)[0], (3, SAMPLES)),
                             np.mod(under, solution.period)], axis=1)
         moment = solution.rail_bending_moment(t, x[:, None])
     else:

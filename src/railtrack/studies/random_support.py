@@ -98,7 +98,7 @@ class RandomSupport:
 
 def _peaks(solution) -> tuple[float, float]:
     passage = solution.passage
-    times = solution.one_period(TIMES)
+    times = solution.one_period(TIMES)[0]
     seat = float(solution.rail_seat_load(times).max())
     span = passage.sleeper_spacing
     x = np.arange(solution.sleepers * POINTS_PER_SPAN) * span / POINTS_PER_SPAN
