@@ -38,6 +38,8 @@ __all__ = ["cell_truncation", "solve_cell_auto", "solve_track_cell", "MAX_CELL_H
 
 MAX_CELL_HARMONICS = 400
 """The largest m that harmonics="auto" takes for a cell."""
+CHUNK_ENTRIES = 1_000_000
+"""Matrix entries per group of harmonics in the tail estimate (16 MB a complex array)."""
 
 
 def cell_truncation(solution: CellSolution) -> tuple[float, np.ndarray]:
@@ -53,11 +55,17 @@ def cell_truncation(solution: CellSolution) -> tuple[float, np.ndarray]:
     tangent = _forces(cell, w, v, tangent=True)
     stiffness, damping = tangent[0].mean(axis=-1), tangent[1].mean(axis=-1)
     high = passage.fundamental_frequency * np.arange(m + 1, top + 1)
-    ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, high)
-    support = -cell.sleeper_mass * high[:, None] ** 2 + stiffness + 1j * high[:, None] * damping
-    blocks = ops.first + ops.second * support[:, None, :]
-    rhs = ops.load - np.einsum("nab,bn->na", ops.second, excess)
-    tail = np.linalg.solve(blocks, rhs[..., None])[..., 0].T
+    tail = np.empty((c.shape[0], high.size), dtype=complex)
+    # harmonics in groups of about CHUNK_ENTRIES matrix entries: memory stays bounded
+    step = max(1, CHUNK_ENTRIES // c.shape[0] ** 2)
+    for start in range(0, high.size, step):
+        part = slice(start, start + step)
+        ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, high[part])
+        support = (-cell.sleeper_mass * high[part, None] ** 2 + stiffness
+                   + 1j * high[part, None] * damping)
+        blocks = ops.first + ops.second * support[:, None, :]
+        rhs = ops.load - np.einsum("nab,bn->na", ops.second, excess[:, part])
+        tail[:, part] = np.linalg.solve(blocks, rhs[..., None])[..., 0].T
     grid = np.zeros((c.shape[0], samples // 2 + 1), dtype=complex)
     grid[:, m + 1:top + 1] = tail * samples
     error = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)))

@@ -107,7 +107,7 @@ class CellSolution:
         out = np.empty_like(w)
         for j, law in enumerate(self.cell.foundations):
             out[j] = -np.asarray(law.force(w[j], v[j]), dtype=float)
-        return out
+        return out + 0.0     # a law that never pushes reads 0 N, not -0 N
 
     def contact_fraction(self, samples: int = 2048) -> np.ndarray:
         """Share of the period in which each sleeper presses on its foundation (force > 0) [-]."""

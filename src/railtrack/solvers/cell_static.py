@@ -63,4 +63,4 @@ def cell_at_rest(passage: Passage, cell, *, tol: float = 1e-12,
         stiffness = _forces(cell, c[:, None], still, tangent=True)[0, :, 0]
         c = c - np.linalg.solve(first + second * stiffness, residual)
     force = _forces(cell, c[:, None], np.zeros((cell.sleepers, 1)))[:, 0]
-    return AtRest(c, -(force + sleeper_weight), -force, converged)
+    return AtRest(c, -(force + sleeper_weight) + 0.0, -force + 0.0, converged)
