@@ -5,7 +5,9 @@ bending moment and its kinks), `sleeper` (eqs. 4-8, 14: the pad and the
 coupling P), `load` (eqs. 9-16: the load F), `harmonic_balance` (eqs.
 17-20: the residual, by AFT), `aft_jacobian` (its exact Jacobian), `linear`
 (eq. 23, the closed form of the linear law), `bowl` (the deflection bowl)
-and `dispersion` (the free waves of the smeared track).
+`dispersion` (the free waves of the smeared track), `hill` (eq. 17
+linearised), and for a cell of N differing sleepers `cell_receptance` (eq. 3
+generalised), `cell_linear`, `cell_harmonic_balance` and `cell_rail_field`.
 
 Imports: `railtrack.model` only.
 """

@@ -2,8 +2,9 @@
 
 `track` (rail, pads, sleepers; Table 1), `train` (wagon length, axles,
 loads, speed), `passage` (the train on the track, as the equations take
-it), `foundations` (eqs. 22, 24, 25 and any callable law) and `ballast`
-(a ballast-subgrade support reduced to one layer).  Frozen, validated
+it), `foundations` (eqs. 22, 24, 25 and any callable law), `gap` (a
+hanging sleeper's law), `cell` (N sleepers that differ, repeating along
+the track) and `ballast` (a ballast-subgrade support reduced to one layer).  Frozen, validated
 dataclasses in SI units.
 
 Imports: nothing from railtrack outside this folder.  Every other layer

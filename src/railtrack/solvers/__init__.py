@@ -4,8 +4,11 @@
 (the paper's eq. 21), `newton`, `batch` (Newton on many systems at once),
 `truncation` (how many harmonics: m = "auto"), `conditioning`, `diagnosis`,
 `arguments` (checks of the arguments), `foundation_at_rest`, `solution`
-(the `Solution` and the time histories it defines) and `energy` (the work
-of the pads, the foundation and the loads).
+(the `Solution` and the time histories it defines), `energy` (the work
+of the pads, the foundation and the loads), `floquet` and `contour`
+(stability by Hill's method), and for a cell of N sleepers `cell_newton`,
+`cell_step` (its structured Newton step), `cell_auto` (m = "auto"),
+`cell_static` (the track under its own weight) and `cell_solution`.
 
 Imports: `railtrack.model` and `railtrack.equations`.
 """

@@ -3,7 +3,9 @@
 `sweep` (many solves over any field, batched), `continuation` and `branch`
 (a branch of periodic solutions followed through its folds), `stability`
 (does the ring stay on a solution?), `branch_stability` (the same along a
-branch) and `ramp` (the ring through rising or falling speeds).
+branch), `ramp` (the ring through rising or falling speeds),
+`hanging_sleeper` (the extremes around a void, from either method) and
+`random_support` (a Monte Carlo over sleepers' ballast stiffness).
 
 Imports: any layer below: `railtrack.model`, `railtrack.equations`,
 `railtrack.solvers`, `railtrack.timedomain`.
