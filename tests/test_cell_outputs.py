@@ -109,3 +109,12 @@ def test_a_cell_refuses_what_it_cannot_do():
         rt.solve(TRACK, TRAIN, cell, stability="full")
     with pytest.raises(ValueError, match="explicit"):
         rt.solve(TRACK, TRAIN, cell, samples=256)
+
+
+def test_a_cell_from_another_track_warns_and_a_wrong_index_is_named():
+    other = rt.Passage(rt.Track.ballasted(), TRAIN)
+    cell = rt.SleeperCell.identical(other, SOUND, 4)
+    with pytest.warns(UserWarning, match="sleeper_mass"):
+        rt.solve(TRACK, TRAIN, cell, 10)
+    with pytest.raises(IndexError, match="0 to 3"):
+        cell.with_sleeper(4, foundation=SOUND)

@@ -112,6 +112,10 @@ class SleeperCell:
         if unknown:
             raise TypeError(f"no field named {sorted(unknown)} in SleeperCell; fields: "
                             f"{list(known)} and foundation")
+        if isinstance(index, bool) or not -self.sleepers <= int(index) < self.sleepers \
+                or int(index) != index:
+            raise IndexError(f"sleeper index {index!r} is not in this cell of {self.sleepers} "
+                             f"sleepers (0 to {self.sleepers - 1})")
         values = {name: getattr(self, name).copy() for name in known}
         for name, value in changes.items():
             values[name][index] = value

@@ -142,6 +142,7 @@ def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton
     if stability not in ("quick", "off"):
         raise ValueError(f'stability must be "quick", "full" or "off"; got {stability!r}')
     passage = Passage(track, train)
+    _compare_with_track(track, cell)
     arrays = [f for part in (track, train) for f, v in vars(part).items()
               if not isinstance(v, tuple) and np.ndim(v) > 0]
     if arrays:
@@ -178,3 +179,18 @@ def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton
                       f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
                       f"larger harmonics", TruncationWarning, stacklevel=3)
     return result
+
+
+def _compare_with_track(track, cell) -> None:
+    """Warn when a field of the cell differs from the track's at every sleeper.
+
+    The cell's masses and pads are the ones solved; a cell built from another
+    track's `Passage` would replace this track's without a word.
+    """
+    for name in ("sleeper_mass", "pad_stiffness", "pad_damping"):
+        ours, theirs = getattr(cell, name), float(getattr(track, name))
+        if not np.any(np.isclose(ours, theirs, rtol=1e-12, atol=0.0)):
+            warnings.warn(f"no sleeper of the cell has the track's {name} ({theirs:g}); the "
+                          f"cell's values ({np.unique(ours)[:3]}...) are solved. Build the cell "
+                          f"from this track's Passage if that was not meant", UserWarning,
+                          stacklevel=4)

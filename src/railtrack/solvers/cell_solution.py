@@ -147,7 +147,7 @@ class CellSolution:
 
     def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
                             kinks: str = "closed form") -> np.ndarray:
-        """EI d^2 w_r/dx^2 at (x, t) [N m], sagging positive; t, x broadcast.
+        """EI d^2 w_r/dx^2 at time t [s] and position x [m] (in that order) [N m], sagging positive.
 
         The kinks under the wheels are summed in closed form
         (`railtrack.equations.moment`), as `railtrack.Solution.rail_bending_moment`
@@ -161,7 +161,12 @@ class CellSolution:
         raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
 
     def at_rest(self):
-        """The same track under its own weight before the train arrives (`cell_at_rest`)."""
+        """The same track under its own weight before the train arrives (`cell_at_rest`).
+
+        Per sleeper: displacement [m], rail-seat load and foundation force [N]
+        (positive in compression).  Without gravity (``cell.gravity == 0``,
+        the paper's model) nothing weighs, and every value is 0.
+        """
         return cell_at_rest(self.passage, self.cell)
 
     def one_period(self, samples: int = 400) -> tuple[np.ndarray, np.ndarray]:
