@@ -148,9 +148,10 @@ def test_structured_step_is_the_dense_newton_step(nonlinear):
     c[:, 0] = c[:, 0].real
     residual = cell_residual(cell, c, ops, samples)[0]
     dense = np.linalg.solve(cell_jacobian(cell, c, ops, samples), -pack_harmonics(residual))
-    step = newton_step(cell, c, residual, ops, samples)
-    np.testing.assert_allclose(pack_harmonics(step.T), dense, rtol=0,
-                               atol=1e-10 * np.abs(dense).max())
+    for limit in (10**6, 0):        # the reduced system solved directly, then by GMRES
+        step = newton_step(cell, c, residual, ops, samples, direct_limit=limit)
+        np.testing.assert_allclose(pack_harmonics(step.T), dense, rtol=0,
+                                   atol=1e-10 * np.abs(dense).max())
 
 
 @pytest.mark.parametrize("passage", [PAPER, Passage.paper(speed=80.0)])

@@ -29,7 +29,22 @@ import numpy as np
 
 from ..equations.cell_harmonic_balance import CellOperators, cell_force_jacobian, tangent_spectrum
 
-__all__ = ["newton_step", "varying_sleepers"]
+__all__ = ["newton_step", "varying_sleepers", "DIRECT_LIMIT"]
+
+DIRECT_LIMIT = 1500
+"""Unknowns of the reduced system up to which it is solved directly (a dense LU).
+
+Beyond, GMRES on the reduced operator ``I + E W``: every sleeper nonlinear
+(a cell on the cubic law) makes it as large as the whole system, whose
+dense solve costs (N (2m+1))^3 / 3 and (N (2m+1))^2 floats (30 sleepers at
+m = 90: 16 s and 240 MB a step); its operator is applied in
+O((m+1) q^2 + q (2m+1)^2) and is the identity plus the tangent's variation
+seen through the mean-tangent track, so that GMRES needs few iterations
+unless a law's stiffness swings far from its mean.
+"""
+GMRES_TOL = 1e-13
+"""Relative residual to which GMRES solves the reduced system (the step is then exact
+to far below Newton's own tolerance)."""
 
 
 def varying_sleepers(samples_stiffness: np.ndarray, samples_damping: np.ndarray) -> np.ndarray:
@@ -85,11 +100,13 @@ def _unpack(x: np.ndarray, q: int) -> np.ndarray:
 
 
 def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellOperators,
-                samples: int) -> np.ndarray:
+                samples: int, *, direct_limit: int = DIRECT_LIMIT) -> np.ndarray:
     """The exact Newton step dc (N, m+1) for the residual R (m+1, N) at c (N, m+1) [m].
 
     Parameters as `railtrack.equations.cell_harmonic_balance.cell_jacobian`;
-    `residual` is `cell_residual`'s first output at `coefficients`.
+    `residual` is `cell_residual`'s first output at `coefficients`.  The
+    reduced system is solved directly up to `direct_limit` unknowns, beyond
+    that by GMRES (`_iterative`).
 
     Raises
     ------
@@ -112,13 +129,45 @@ def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellO
     diagonal = np.arange(m + 1)
     direct[:, diagonal, diagonal] -= (mean_stiffness[varying, None]
                                       + 1j * ops.omega * mean_damping[varying, None])
-    rest = _to_pack(_real_blocks(direct, conjugate))
+    per_sleeper = _real_blocks(direct, conjugate)                             # (q, 2m+1, 2m+1)
     through_rail = np.linalg.solve(blocks, ops.second[:, :, varying])           # (m+1, N, q)
-    response = _harmonic_map(through_rail[:, varying, :])
     q = varying.size
-    reduced = np.eye(rest.shape[0]) + rest @ response
-    forces = _unpack(np.linalg.solve(reduced, rest @ _pack(y[:, varying])), q)
+    if q * (2 * m + 1) <= direct_limit:
+        rest = _to_pack(per_sleeper)
+        reduced = np.eye(rest.shape[0]) + rest @ _harmonic_map(through_rail[:, varying, :])
+        forces = _unpack(np.linalg.solve(reduced, rest @ _pack(y[:, varying])), q)
+    else:
+        forces = _unpack(_iterative(per_sleeper, through_rail[:, varying, :],
+                                    _pack(y[:, varying]), q), q)
     correction = np.einsum("nab,nb->na", through_rail, forces)
     step = y - correction
     step[0] = step[0].real
     return step.T
+
+
+def _iterative(per_sleeper: np.ndarray, response: np.ndarray, target: np.ndarray, q: int):
+    """s of ``(I + E W) s = E target`` by GMRES, matrix-free; dense if GMRES fails.
+
+    `per_sleeper` holds E's real blocks (q, 2m+1, 2m+1), `response` W's
+    complex blocks per harmonic (m+1, q, q); vectors in `pack_harmonics`
+    order, whose reshape to (2m+1, q) has each sleeper's packed harmonics as
+    a column.
+    """
+    from scipy.sparse.linalg import LinearOperator, gmres
+
+    size = per_sleeper.shape[1]
+
+    def tangent_part(x):
+        return np.einsum("jab,bj->aj", per_sleeper, x.reshape(size, q)).ravel()
+
+    def through_rail(x):
+        return _pack(np.einsum("nab,nb->na", response, _unpack(x, q)))
+
+    operator = LinearOperator((size * q, size * q), dtype=float,
+                              matvec=lambda x: x + tangent_part(through_rail(x)))
+    rhs = tangent_part(target)
+    solution, info = gmres(operator, rhs, rtol=GMRES_TOL, atol=0.0, restart=60, maxiter=20)
+    if info != 0:
+        dense = np.eye(size * q) + _to_pack(per_sleeper) @ _harmonic_map(response)
+        solution = np.linalg.solve(dense, _to_pack(per_sleeper) @ target)
+    return solution
