@@ -250,7 +250,7 @@ ANSWERS = {
         ("rise of the most loaded sleeper", r"most loaded: sleeper \d+, \+(\d+)% over sound track",
          "%", 0.5),
         ("two hanging: peak seat load of sleeper 14",
-         r"two hanging: peak seat loads of sleepers 13-18 \[kN\]: [\d.]+, ([\d.]+),", "kN", 0.05),
+         r"two hanging, peak seat loads 13-18 \[kN\]: [\d.]+, ([\d.]+),", "kN", 0.05),
     ],
     "12.2": [
         ("hard sleeper's peak load over the sound track's",

@@ -45,6 +45,7 @@ from railtrack.plotting.book import model as pm  # noqa: E402
 from railtrack.plotting.book import paper_figures as pf  # noqa: E402
 from railtrack.plotting.book import passage as pp  # noqa: E402
 from railtrack.plotting.book import rail_span as rs  # noqa: E402
+from railtrack.plotting.book import sleepers as slp  # noqa: E402
 from railtrack.plotting.book import speed as sp  # noqa: E402
 from railtrack.plotting.branch import plot_branch, plot_multipliers, ramp_on_branch  # noqa: E402
 from railtrack.plotting.solution import plot_solution  # noqa: E402
@@ -268,7 +269,23 @@ def _paper_and_ballasted():
                                   "auto", method="analytic")}
 
 
+def _cells():
+    sound = rt.SleeperCell.identical(PASSAGE, LINEAR, 4)
+    hanging = sound.with_sleeper(2, foundation=rt.GapFoundation(1e-3, 20e6, 0.2e6))
+    return {name: rt.solve(PASSAGE.track, PASSAGE.train, cell, 10)
+            for name, cell in (("sound track", sound), ("gap 1 mm", hanging))}
+
+
+def _support(variation):
+    return rt.random_support(PASSAGE.track, PASSAGE.train, LINEAR, sleepers=4,
+                             variation=variation, draws=5, harmonics=10)
+
+
 FIGURES = {
+    "sleepers.plot_bowl": lambda: slp.plot_bowl(_cells(), 2, reach=2, points=61),
+    "sleepers.plot_seat_histories": lambda: slp.plot_seat_histories(_cells(), (1, 2)),
+    "sleepers.plot_random_support": lambda: slp.plot_random_support(
+        {0.2: _support(0.2), 0.4: _support(0.4)}, (25e3, 18e3)),
     "style.plot_sweep": lambda: plot_sweep(
         np.linspace(0.25, 9.0, 11), {"deepest": np.linspace(1, 2, 11), "highest": np.linspace(0, 1, 11)},
         xlabel="D [m]", ylabel="w [mm]", marks={"1 % limit": 2.0, "paper, D = 3 m": 3.0}),
