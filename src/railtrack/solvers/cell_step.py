@@ -27,7 +27,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..equations.cell_harmonic_balance import CellOperators, cell_force_jacobian, tangent_spectrum
+from ..equations.cell_harmonic_balance import (
+    CellOperators,
+    cell_force_jacobian,
+    pack_harmonics,
+    tangent_spectrum,
+    unpack_harmonics,
+)
 
 __all__ = ["newton_step", "varying_sleepers", "DIRECT_LIMIT"]
 
@@ -45,6 +51,11 @@ unless a law's stiffness swings far from its mean.
 GMRES_TOL = 1e-13
 """Relative residual to which GMRES solves the reduced system (the step is then exact
 to far below Newton's own tolerance)."""
+
+
+def _unpack(x: np.ndarray, q: int) -> np.ndarray:
+    """`unpack_harmonics`, harmonic-major: (m+1, q)."""
+    return unpack_harmonics(x, q).T
 
 
 def varying_sleepers(samples_stiffness: np.ndarray, samples_damping: np.ndarray) -> np.ndarray:
@@ -87,18 +98,6 @@ def _harmonic_map(matrices: np.ndarray) -> np.ndarray:
     return out
 
 
-def _pack(values: np.ndarray) -> np.ndarray:
-    return np.concatenate([values[0].real, values[1:].real.ravel(), values[1:].imag.ravel()])
-
-
-def _unpack(x: np.ndarray, q: int) -> np.ndarray:
-    m = (x.size // q - 1) // 2
-    out = np.empty((m + 1, q), dtype=complex)
-    out[0] = x[:q]
-    out[1:] = (x[q:q + m * q] + 1j * x[q + m * q:]).reshape(m, q)
-    return out
-
-
 def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellOperators,
                 samples: int, *, direct_limit: int = DIRECT_LIMIT) -> np.ndarray:
     """The exact Newton step dc (N, m+1) for the residual R (m+1, N) at c (N, m+1) [m].
@@ -135,10 +134,10 @@ def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellO
     if q * (2 * m + 1) <= direct_limit:
         rest = _to_pack(per_sleeper)
         reduced = np.eye(rest.shape[0]) + rest @ _harmonic_map(through_rail[:, varying, :])
-        forces = _unpack(np.linalg.solve(reduced, rest @ _pack(y[:, varying])), q)
+        forces = _unpack(np.linalg.solve(reduced, rest @ pack_harmonics(y[:, varying])), q)
     else:
         forces = _unpack(_iterative(per_sleeper, through_rail[:, varying, :],
-                                    _pack(y[:, varying]), q), q)
+                                    pack_harmonics(y[:, varying]), q), q)
     correction = np.einsum("nab,nb->na", through_rail, forces)
     step = y - correction
     step[0] = step[0].real
@@ -161,7 +160,7 @@ def _iterative(per_sleeper: np.ndarray, response: np.ndarray, target: np.ndarray
         return np.einsum("jab,bj->aj", per_sleeper, x.reshape(size, q)).ravel()
 
     def through_rail(x):
-        return _pack(np.einsum("nab,nb->na", response, _unpack(x, q)))
+        return pack_harmonics(np.einsum("nab,nb->na", response, _unpack(x, q)))
 
     operator = LinearOperator((size * q, size * q), dtype=float,
                               matvec=lambda x: x + tangent_part(through_rail(x)))
