@@ -33,6 +33,7 @@ from .fem import ring_mesh, sleepers_on_ring, wheel_load_entries
 from .ring_cell import ring_cell, ring_train
 from .ring_fields import SleeperRecorder
 from .ring_outputs import ring_outputs, watched_dofs
+from .ring_wheels import attach_wheels, check_wheel_arguments
 from .ring_state import initial_state
 from ..model.cell import SleeperCell
 from ..model.foundations import as_foundation
@@ -90,6 +91,8 @@ def simulate_time_domain(
     max_newton_iterations: int = 50,
     warn_step_error: float | None = 1e-3,
     wagons: int = 1,
+    wheel=None,
+    profile=None,
 ) -> TimeDomainSolution:
     """Periodic steady response of the track by finite elements and Newmark time stepping.
 
@@ -168,6 +171,17 @@ def simulate_time_domain(
         wagons x H, `railtrack.timedomain.ring_cell.ring_train`), so that it
         can carry a cell longer than one wagon.  The period, the steps per
         period and the result's passage are then the tiled train's.
+    wheel : railtrack.model.wheel.Wheel, optional
+        Each axle of the ring's train becomes a wheel of this unsprung mass on
+        a Hertz spring (`railtrack.timedomain.ring_wheels`), started at rest on
+        the statically loaded track (start "static" only); the result then has
+        `contact_forces` and `wheel_displacements`, and the period counts as
+        repeated only when the contact forces repeat too (to `tol` of their
+        peak).  Default: constant moving forces.
+    profile : callable, optional
+        Rail-top profile r(x) [m] fixed on the ring (`railtrack.model.profile`),
+        which the wheels roll on; it must repeat with the ring's length
+        wagons x H.  Needs `wheel`; default the smooth rail.
 
     Returns
     -------
@@ -228,6 +242,7 @@ def simulate_time_domain(
         raise ValueError(f"warn_step_error must be a finite number > 0 or None; got {warn_step_error!r}")
     check_run_cost(sleepers_on_ring(passage), elements_per_span, steps_per_period, max_periods)
     check_steps_per_period(passage, steps_per_period)
+    check_wheel_arguments(wheel, profile, start)
     cell = None
     if isinstance(foundation, SleeperCell):
         n_ring = sleepers_on_ring(passage)
@@ -264,6 +279,8 @@ def simulate_time_domain(
                                   elements_per_span, warn_step_error)
     stepper = NewmarkStepper(mesh, law, reference, dt, loads, newton_abs, max_newton_iterations,
                              weight)
+    if wheel is not None:
+        u, stepper = attach_wheels(stepper, wheel, profile, u, times, reference[0], wagons)
     every_sleeper = cell is not None and not cell.uniform
     recorder = SleeperRecorder(mesh, n_steps)
 
@@ -302,6 +319,7 @@ def simulate_time_domain(
                 )
         history[periods - 1] = record[:, 0]
         current = history[periods - 1]
+        wheels_change = None if wheel is None else stepper.period_change()
         if previous is not None:
             if every_sleeper:  # the differing sleepers may settle at different rates
                 peak = max(float(np.max(np.abs(record))), np.finfo(float).tiny)
@@ -309,6 +327,8 @@ def simulate_time_domain(
             else:
                 peak = max(float(np.max(np.abs(current))), np.finfo(float).tiny)
                 changes.append(float(np.max(np.abs(current - previous))) / peak)
+            if wheels_change is not None:
+                changes[-1] = max(changes[-1], wheels_change)
             converged = changes[-1] <= tol
             if converged and periods >= min_periods:
                 break
@@ -334,4 +354,5 @@ def simulate_time_domain(
         final_state=(u.copy(), v.copy()),
         **recorder.outputs(law, record),
         wagons=int(wagons),
+        **({} if wheel is None else stepper.outputs()),
     )

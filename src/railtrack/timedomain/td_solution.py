@@ -69,6 +69,15 @@ class TimeDomainSolution:
     wagons : int
         Wagons on the ring; its sleepers number wagons x H / L and `passage`
         holds the tiled train (a period of wagons x H / v).
+    contact_forces, wheel_displacements, rail_under_wheels : ndarray or None
+        With wheels (``simulate_time_domain(..., wheel=...)``), shape
+        (steps_per_period, J) for the J wheels of the ring (the tiled train's
+        axles, in order): the Hertz contact force P >= 0 [N], the wheel's
+        displacement z and the rail's displacement u_c under it [m], positive
+        upward, over the last period; None for constant moving forces.
+        `loss_of_contact` gives when P = 0.
+    wheel : Wheel or None
+        The wheel of the run.
 
     A `SleeperCell` run keeps the cell in `foundation`; ring sleeper i is its
     sleeper i mod N.  `contact_fraction` gives each sleeper's share of the
@@ -99,6 +108,10 @@ class TimeDomainSolution:
     bending_moments_above_sleepers: np.ndarray | None = None
     bending_moments_midspan: np.ndarray | None = None
     wagons: int = 1
+    contact_forces: np.ndarray | None = None
+    wheel_displacements: np.ndarray | None = None
+    rail_under_wheels: np.ndarray | None = None
+    wheel: Any = None
 
     def contact_fraction(self, threshold: float = 0.0) -> np.ndarray:
         """Share of the last period during which each ring sleeper's foundation pushes [-].
@@ -112,3 +125,16 @@ class TimeDomainSolution:
         if self.foundation_forces is None:
             raise ValueError("this solution has no per-sleeper foundation forces")
         return contact_fraction(self.foundation_forces, threshold)
+
+    def loss_of_contact(self) -> tuple[np.ndarray, np.ndarray]:
+        """Each wheel's share of the last period with P = 0 [-] and its longest such stretch [s].
+
+        Shapes (J,) each (`railtrack.timedomain.ring_contact.loss_of_contact`;
+        a stretch over the period's end continues at its start).
+        """
+        from .ring_contact import loss_of_contact
+
+        if self.contact_forces is None:
+            raise ValueError("this solution has no wheels: run simulate_time_domain(..., "
+                             "wheel=Wheel(...)) for contact forces")
+        return loss_of_contact(self.contact_forces, float(self.times[1] - self.times[0]))

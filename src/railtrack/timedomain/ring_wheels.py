@@ -1,0 +1,277 @@
+"""Wheels with mass and Hertz contact on the finite-element ring (issue 20).
+
+With a `railtrack.model.wheel.Wheel`, every axle j of the ring's train is a
+wheel DOF z_j (positive upward) instead of a constant force.  Its contact
+point x_c = v t - d_j (mod the ring's length) lies in one rail element,
+whose Hermite shape functions N(xi) (`railtrack.timedomain.fem`) give the
+rail's displacement there, u_c = N . u_e, and spread the contact force on
+it, -P N (the consistent load).  With the rail-top profile r(x) fixed on
+the ring (`railtrack.model.profile`):
+
+    delta_j = u_c,j + r(x_c,j) - z_j,      P_j = C_H max(delta_j, 0)^{3/2},
+    m_w z_j'' + c_p z_j' + k_p z_j = P_j - Q_j.
+
+A Newmark step (average acceleration, as `railtrack.timedomain.newmark`) is
+``A u + U g + B P = b`` for the ring, B the shape functions of the contact
+points at the end of the step, and ``a_w z = h_w + P - Q`` for the wheels
+(a_w = k_p + (2/dt) c_p + (4/dt^2) m_w).  The unknowns that carry the
+nonlinearity, y = (sleeper displacements w, compressions delta), satisfy
+
+    y - y_hat + S' F(y) = 0,      S' = V^T A^-1 V + diag(0, 1/a_w),   V = [U, B],
+
+with F = (g(w), P(delta)) and y_hat the response without them: Newton on
+n_sleepers + n_wheels unknowns, Jacobian ``I + S' diag(F')``.  A^-1 U is
+factored once (`CondensedSystem`); A^-1 B costs one back-substitution per
+wheel and step, in the same call as the free response.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .newmark import CondensedSystem, NewmarkStepper, _sleeper_projector, evaluate_law
+from .ring_contact import contact_shapes, profile_on_ring
+from ..model.profile import smooth_rail
+from ..model.wheel import Wheel
+
+__all__ = ["check_wheel_arguments", "attach_wheels", "WheelStepper", "solve_contacts"]
+
+
+def check_wheel_arguments(wheel, profile, start) -> None:
+    """Refuse a profile without a wheel, a wheel that is not a `Wheel`, or a non-static start."""
+    if wheel is None:
+        if profile is not None:
+            raise ValueError("a rail-top profile needs wheels to roll on it: pass wheel=Wheel(...) "
+                             "(constant moving forces do not feel the profile)")
+        return
+    if not isinstance(wheel, Wheel):
+        raise TypeError(f"wheel must be a railtrack.model.wheel.Wheel; got {type(wheel).__name__}")
+    if not (isinstance(start, str) and start == "static"):
+        raise ValueError("with wheels the ring starts from its static state only (start='static': "
+                         f"the wheels at rest on the loaded track); got start={start!r}")
+
+
+def attach_wheels(stepper: NewmarkStepper, wheel: Wheel, profile, u: np.ndarray, times,
+                  reference_stiffness, wagons: int = 1):
+    """The wheels at rest on the statically loaded ring: (u, WheelStepper).
+
+    With no primary stiffness the wheel carries P = Q at rest, so the ring's
+    static state `u` (under the constant forces Q) is kept and the wheel sits
+    delta_0 = (Q / C_H)^{2/3} below the rail top: z = u_c + r - delta_0.  With
+    k_p > 0 the wheel's rest is P = Q + k_p z, solved with the ring
+    (`solve_contacts` on the static matrix K + k0 U U^T).
+
+    Parameters
+    ----------
+    stepper : NewmarkStepper
+    wheel : Wheel
+    profile : callable or None
+        r(x) [m]; None is the smooth rail.
+    u : ndarray, shape (n_dofs,)
+        The ring's static state under the constant forces [m, rad].
+    times : ndarray, shape (steps,)
+        The steps of a period [s].
+    reference_stiffness : float or ndarray
+        k0 of the factored matrix [N/m] (one per sleeper for a cell).
+    wagons : int
+        Wagons on the ring (for messages).
+    """
+    mesh = stepper.mesh
+    r = profile_on_ring(smooth_rail if profile is None else profile, mesh, times, wagons)
+    dofs, shapes = contact_shapes(mesh, times)
+    loads = np.asarray(mesh.passage.axle_loads, dtype=float)
+    if float(wheel.primary_stiffness) == 0.0:
+        p = loads.copy()
+        uc = np.einsum("jk,jk->j", shapes[0], u[dofs[0]])
+        z = uc + r[0] - np.array([wheel.static_compression(q) for q in loads])
+    else:
+        k = float(wheel.primary_stiffness)
+        system = CondensedSystem(mesh.stiffness + _sleeper_projector(mesh, reference_stiffness),
+                                 mesh.sleeper_dofs)
+        rest = np.zeros(mesh.n_sleepers)
+
+        def remainder(w):
+            force, slope, _ = evaluate_law(stepper.foundation, w, rest)
+            return force - reference_stiffness * w, slope - reference_stiffness
+
+        rhs = np.zeros(mesh.n_dofs) if stepper.constant is None else stepper.constant.copy()
+        u, _, p, uc = solve_contacts(system, rhs, (dofs[0], shapes[0]), wheel, r[0] + loads / k, k,
+                                     remainder, (rest, loads), stepper.tol, stepper.iterations)
+        z = (p - loads) / k
+    zero = np.zeros_like(z)
+    wheels = WheelStepper(stepper, wheel, r, (dofs, shapes), loads, (z, zero, zero, p))
+    wheels.uc = uc
+    return u, wheels
+
+
+class WheelStepper:
+    """Newmark steps of the ring with one wheel per axle on Hertz springs (module docstring).
+
+    Parameters
+    ----------
+    stepper : NewmarkStepper
+        The ring's stepper (factored matrix, history operator, foundation);
+        its moving wheel loads are not used: the wheels load the rail
+        through their contact forces.
+    wheel : railtrack.model.wheel.Wheel
+    profile_values : ndarray, shape (steps, J)
+        r(x_c) [m] under each wheel at each step of a period.
+    shapes : (dofs, weights), shapes (steps, J, 4)
+        `contact_shapes` at each step of a period.
+    loads : ndarray, shape (J,)
+        Q_j [N].
+    state : (z, z', z'') and P, each shape (J,)
+        The wheels' state and contact forces at t = 0 [m, m/s, m/s^2], [N].
+
+    Notes
+    -----
+    `step` records the state it starts from (step index ``index - 1``) in
+    ``contact_forces``, ``wheel_displacements`` and ``rail_under_wheels``
+    (u_c), shape (steps, J): after a period these hold the period just run.
+    """
+
+    def __init__(self, stepper: NewmarkStepper, wheel, profile_values, shapes, loads, state):
+        self.stepper, self.wheel = stepper, wheel
+        self.r, (self.dofs, self.shapes) = profile_values, shapes
+        self.q = np.asarray(loads, dtype=float)
+        self.z, self.zv, self.za, self.p = (np.array(part, dtype=float) for part in state)
+        dt, m = stepper.dt, float(wheel.unsprung_mass)
+        self.gain = float(wheel.primary_stiffness) + (2.0 / dt) * float(wheel.primary_damping) \
+            + (4.0 / dt**2) * m
+        steps, count = self.r.shape
+        self.contact_forces = np.empty((steps, count))
+        self.wheel_displacements = np.empty((steps, count))
+        self.rail_under_wheels = np.empty((steps, count))
+        self.previous: np.ndarray | None = None
+        self.uc = np.zeros(count)
+
+    def period_change(self) -> float:
+        """max |P_k - P_{k-1}| / max |P_k| between the last two periods recorded [-]."""
+        current = self.contact_forces
+        change = np.inf
+        if self.previous is not None:
+            peak = max(float(np.max(np.abs(current))), np.finfo(float).tiny)
+            change = float(np.max(np.abs(current - self.previous))) / peak
+        self.previous = current.copy()
+        return change
+
+    def _wheel_history(self) -> np.ndarray:
+        """h_w: the wheels' Newmark right-hand side from the state at the start of the step [N]."""
+        dt, wheel = self.stepper.dt, self.wheel
+        m, c = float(wheel.unsprung_mass), float(wheel.primary_damping)
+        return (m * ((4.0 / dt**2) * self.z + (4.0 / dt) * self.zv + self.za)
+                + c * ((2.0 / dt) * self.z + self.zv))
+
+    def step(self, u, v, a, index: int):
+        """State (u, u', u'') of the ring at the end of the step ending at step `index`."""
+        base, dt = self.stepper, self.stepper.dt
+        previous = (index - 1) % self.r.shape[0]
+        self.contact_forces[previous] = self.p
+        self.wheel_displacements[previous] = self.z
+        self.rail_under_wheels[previous] = self.uc
+        sleepers = base.mesh.sleeper_dofs
+        rhs = base.history @ np.concatenate([u, v, a])
+        if base.constant is not None:
+            rhs += base.constant
+        history = self._wheel_history()
+        u_next, base.force, self.p, self.uc = solve_contacts(
+            base.system, rhs, (self.dofs[index], self.shapes[index]), self.wheel,
+            self.r[index] - (history - self.q) / self.gain, self.gain,
+            base._remainder((2.0 / dt) * u[sleepers] + v[sleepers]), (base.force, self.p),
+            base.tol, base.iterations)
+        z_next = (history + self.p - self.q) / self.gain
+        increment = z_next - self.z
+        self.za = (4.0 / dt**2) * increment - (4.0 / dt) * self.zv - self.za
+        self.zv = (2.0 / dt) * increment - self.zv
+        self.z = z_next
+        increment = u_next - u
+        a_next = (4.0 / dt**2) * increment - (4.0 / dt) * v - a
+        v_next = (2.0 / dt) * increment - v
+        return u_next, v_next, a_next
+
+    def outputs(self) -> dict[str, np.ndarray]:
+        """The wheels' records of the last period for `TimeDomainSolution` (copies)."""
+        return dict(contact_forces=self.contact_forces.copy(),
+                    wheel_displacements=self.wheel_displacements.copy(),
+                    rail_under_wheels=self.rail_under_wheels.copy(), wheel=self.wheel)
+
+
+def solve_contacts(system, rhs, contacts, wheel, offset, gain, remainder, guess, tol, iterations):
+    """One solve of ``A u + U g(w) + B P(delta) = rhs`` with the wheels condensed in.
+
+    Parameters
+    ----------
+    system : CondensedSystem
+        A factored, with A^-1 U and S = U^T A^-1 U.
+    rhs : ndarray, shape (n_dofs,)
+        b [N, N m].
+    contacts : (dofs, shapes), shapes (J, 4)
+        The contact points' element DOFs and Hermite weights.
+    wheel : Wheel
+    offset : ndarray, shape (J,)
+        r(x_c) - (h_w - Q) / a_w [m]: with it delta = u_c - P / a_w + offset.
+    gain : float
+        a_w [N/m] (k_p in a static solve).
+    remainder : callable
+        w -> (g, dg/dw) of the sleepers' laws beyond the factored reference [N, N/m].
+    guess : (g, P)
+        Starting forces [N].
+    tol : float
+        Newton's tolerance on w and delta [m] (plus a round-off floor).
+    iterations : int
+
+    Returns
+    -------
+    u : ndarray, shape (n_dofs,)
+    g, P : ndarray
+        The converged sleeper remainders and contact forces [N].
+    u_c : ndarray, shape (J,)
+        The rail's displacement under each wheel [m].
+    """
+    dofs, shapes = contacts
+    sleepers = system.sleeper_dofs
+    count, n_s = shapes.shape[0], sleepers.size
+    columns = np.zeros((rhs.size, 1 + count))
+    columns[:, 0] = rhs
+    for j in range(count):
+        np.add.at(columns[:, 1 + j], dofs[j], shapes[j])
+    solved = system.lu.solve(columns)
+    free, contact = solved[:, 0], solved[:, 1:]   # A^-1 b [m], A^-1 B [m/N]
+
+    def at_contacts(field):
+        return np.einsum("jk,jk...->j...", shapes, field[dofs])
+
+    influence = np.empty((n_s + count, n_s + count))
+    influence[:n_s, :n_s] = system.influence
+    influence[:n_s, n_s:] = contact[sleepers]
+    influence[n_s:, :n_s] = at_contacts(system.response)
+    influence[n_s:, n_s:] = at_contacts(contact) + np.eye(count) / gain
+    target = np.concatenate([free[sleepers], at_contacts(free) + offset])
+
+    def forces(y):
+        g, dg = remainder(y[:n_s])
+        delta = y[n_s:]
+        return (np.concatenate([g, wheel.contact_force(delta)]),
+                np.concatenate([dg, wheel.contact_stiffness(delta)]))
+
+    y = target - influence @ np.concatenate(guess)
+    for _ in range(iterations + 1):
+        force, slope = forces(y)
+        coupled = influence @ force
+        mismatch = y - target + coupled
+        # Round-off floor: the contact rows hold P / a_w, metres for a light wheel.
+        floor = tol + 16 * np.finfo(float).eps * (np.abs(target) + np.abs(coupled))
+        if np.all(np.abs(mismatch) <= floor):
+            break
+        if not np.all(np.isfinite(mismatch)):
+            raise RuntimeError("Newton on the sleepers and wheel contacts diverged: its "
+                               "mismatch is not finite")
+        y = y - np.linalg.solve(np.eye(y.size) + influence * slope[None, :], mismatch)
+    else:
+        raise RuntimeError(
+            f"Newton on the sleepers and wheel contacts did not converge in {iterations} "
+            f"iterations (mismatch {float(np.max(np.abs(mismatch))):.2e} m): raise "
+            "max_newton_iterations, or check the foundation law and the profile's smoothness")
+    g, p = force[:n_s], force[n_s:]
+    u = free - system.response @ g - contact @ p
+    return u, g, p, at_contacts(u)
