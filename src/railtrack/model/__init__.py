@@ -4,7 +4,8 @@
 loads, speed), `passage` (the train on the track, as the equations take
 it), `foundations` (eqs. 22, 24, 25 and any callable law), `gap` (a
 hanging sleeper's law), `cell` (N sleepers that differ, repeating along
-the track) and `ballast` (a ballast-subgrade support reduced to one layer).  Frozen, validated
+the track), `wheel` and `profile` (the wheel on the rail and the rail-top
+profile), `timoshenko` (a rail with shear and rotary inertia) and `ballast` (a ballast-subgrade support reduced to one layer).  Frozen, validated
 dataclasses in SI units.
 
 Imports: nothing from railtrack outside this folder.  Every other layer
