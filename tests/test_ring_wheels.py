@@ -197,3 +197,14 @@ def test_loss_of_contact_wraps_around_the_period():
     assert longest == pytest.approx([0.5, 0.0])  # steps 3, 4, 5, 0, 1
     with pytest.raises(ValueError, match="no wheels"):
         _run(max_periods=1).loss_of_contact()
+
+
+def test_an_unresolved_stiff_contact_is_not_reported_converged():
+    # 1 kg on C_H = 1e16 (sqrt(k_H / m_w) dt ~ 1e3, unresolved): the
+    # average-acceleration step pumps the stiff Hertz spring until the
+    # wheel leaves the rail; that is no periodic state (a wheel with P = 0
+    # all period is in free fall).
+    result = _run(wheel=Wheel(1.0, 1e16), max_periods=8)
+    share, _ = result.loss_of_contact()
+    assert share.max() > 0.5
+    assert not result.converged

@@ -146,14 +146,23 @@ class WheelStepper:
         self.uc = np.zeros(count)
 
     def period_change(self) -> float:
-        """max |P_k - P_{k-1}| / max |P_k| between the last two periods recorded [-]."""
+        """How far the last period is from a periodic one, for the wheels [-].
+
+        The larger of max |P_k - P_{k-1}| / max |P_k| between the last two
+        periods and the wheels' equilibrium over the last period,
+        max_j |mean P_j - Q_j - k_p mean z_j| / max Q (zero for a periodic
+        state: the means of z'' and z' vanish).  A wheel that has lost
+        contact for good (P = 0 all period) is never periodic.
+        """
         current = self.contact_forces
         change = np.inf
-        if self.previous is not None:
-            peak = max(float(np.max(np.abs(current))), np.finfo(float).tiny)
+        if self.previous is not None and np.all(np.isfinite(current)):
+            peak = max(float(np.max(np.abs(current))), float(np.max(self.q)))
             change = float(np.max(np.abs(current - self.previous))) / peak
+        stiffness = float(self.wheel.primary_stiffness)
+        balance = current.mean(axis=0) - self.q - stiffness * self.wheel_displacements.mean(axis=0)
         self.previous = current.copy()
-        return change
+        return max(change, float(np.max(np.abs(balance))) / float(np.max(self.q)))
 
     def _wheel_history(self) -> np.ndarray:
         """h_w: the wheels' Newmark right-hand side from the state at the start of the step [N]."""

@@ -177,7 +177,11 @@ def simulate_time_domain(
         the statically loaded track (start "static" only); the result then has
         `contact_forces` and `wheel_displacements`, and the period counts as
         repeated only when the contact forces repeat too (to `tol` of their
-        peak).  Default: constant moving forces.
+        peak) and balance the wheel loads.  The step should resolve the
+        contact's frequency sqrt(k_H / m_w) (k_H = 1.5 C_H delta_0^{1/2}):
+        an unresolved stiff contact (a 1 kg wheel on C_H = 1e16) is pumped
+        by the average-acceleration step and does not converge.  Default:
+        constant moving forces.
     profile : callable, optional
         Rail-top profile r(x) [m] fixed on the ring (`railtrack.model.profile`),
         which the wheels roll on; it must repeat with the ring's length
