@@ -7,7 +7,9 @@ step and its error (`timestep`), the run's cost estimated beforehand
 (`runcost`), the ring started from a harmonic-balance solution
 (`ring_state`), its forces and moments (`ring_outputs`; every sleeper's,
 `ring_fields`), a cell of differing sleepers laid along it (`ring_cell`),
-its result (`td_solution`) and the spectrum of a record (`spectrum`).
+wheels of mass on Hertz springs over a rail-top profile (`ring_wheels`,
+`ring_contact`), its result (`td_solution`) and the spectrum of a record
+(`spectrum`).
 
 Imports: `railtrack.model`, `railtrack.equations` and `railtrack.solvers`.
 """
