@@ -1,0 +1,157 @@
+"""Harmonic balance with wheels on Hertz springs: the residual (issue 20, first version).
+
+The cell of N sleepers (`railtrack.equations.cell_harmonic_balance`) now
+carries, instead of constant forces Q_k, the contact forces P_k(t) of the
+wheels of `railtrack.model.wheel` (every wagon's wheel k alike).  With
+Lambda = NL and G = H / Lambda a whole number (the wheels then meet the
+cell's pattern G times a wagon period), P_k has harmonics p = G l only.
+
+Unknowns: c_{j,n} (n = 0..m), P_{k,p} (p = G, 2G, .. <= m; P_{k,0} = Q_k, the
+wheel's mean balance with an infinitely soft suspension) and each wheel's
+mean height relative to the rail under it, y_k (below).
+
+* Sleepers, harmonic n: ``R_n = K1_n c_n + K2_n p_n - g_n - W_n P``, g_n of
+  `cell_operators` (the wheels' means) and, for each p != 0 (two-sided),
+  ``W_n P = sum_k F[:, s] (-4 sqrt(N) (L/H) gap(a_n, Q) e^{i kappa_{p-n} d_k} P_{k,p})``,
+  the free rail under the wheels' force harmonic p read at the sleepers and
+  multiplied by the Floquet mode's denominator: s = -p/G (mod N),
+  kappa_r = 2 pi r / H, Q = kappa_{p-n} L, and
+  ``gap(a, Q) = (cos a - cos Q)(cosh a - cos Q) / ((Q^4 - a^4) cosh a)``, finite
+  where Q = +-a.  For p = 0 it is g_n itself.
+* Contacts, harmonic p = 0, G, 2G, ..: ``B_{k,p} = [C_H max(delta_k, 0)^{3/2}]_p - P_{k,p}``
+  (B_{k,0} uses Q_k), delta_k = u_k + r(vt - d_k) - z_k by AFT, with
+  the rail under the wheel u_k from the sleepers' reactions R = -p,
+  ``sum_n sum_j' R_{j',n} e^{i kappa (d_k + x_j')} / (EI Lambda (kappa^4 - k_n^4))``,
+  kappa = omega_n/v + 2 pi r/Lambda at wheel harmonic p = -r G, and from the
+  wheels, ``sum_k' D_p(d_k' - d_k) (-P_{k',p})``
+  (`railtrack.equations.wheel_train_receptance`), and the wheel
+  ``z_p = -P_p / (m_w omega_p^2)``.  The mean p = 0 of the rail under the
+  wheel contains the rail's rigid lift, infinite in each part and finite in
+  their sum; it is left out, and y_k = z_k0 - u_k0 takes its place: delta is exact.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from ..model.passage import Passage
+from .cell_harmonic_balance import _forces, _synthesize, cell_operators
+from .receptance import bending_wavenumber
+from .wheel_train_receptance import wheel_train_receptance
+
+__all__ = ["WheelSystem", "wheel_system", "wheel_residual", "contact_gap"]
+
+
+def contact_gap(a: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """gap(a, Q) = (cos a - cos Q)(cosh a - cos Q) / ((Q^4 - a^4) cosh a), stably [-]."""
+    cos_gap = 0.5 * np.sinc(0.5 * (a + q) / np.pi) * np.sinc(0.5 * (a - q) / np.pi)
+    both = np.asarray(q**2 + a**2, dtype=float)
+    safe = np.where(both == 0.0, 1.0, both)
+    cosh_gap = np.where(both == 0.0, 0.5, 2.0 * (np.sinh(0.5 * a) ** 2 + np.sin(0.5 * q) ** 2)
+                        / (safe * np.cosh(a)))
+    return cos_gap * cosh_gap
+
+
+class WheelSystem(NamedTuple):
+    """The fixed matrices of `wheel_residual`; see `wheel_system`."""
+
+    ops: object            # CellOperators at omega_n, n = 0..m
+    grid: np.ndarray       # wheel harmonics p = G l, l = 1..lmax
+    load: np.ndarray       # (m+1, N, K, 2 lmax) complex: W for p = +grid then -grid
+    from_sleepers: np.ndarray  # (lmax, K, 2m+1, N): u_{k,p} per R_{j,n}, n = -m..m
+    between_wheels: np.ndarray  # (lmax, K, K): D_p(d_k' - d_k)
+    wheel_mobility: np.ndarray  # (lmax,): -1/(m_w omega_p^2)
+    samples: int
+    sleeper_weight: np.ndarray  # (N,) [N], M_j g
+
+
+def wheel_system(passage: Passage, cell, wheel, harmonics: int, samples: int) -> WheelSystem:
+    """The linear parts of the residual for a cell, a wheel and m harmonics."""
+    n_sl, m = cell.sleepers, int(harmonics)
+    span, wagon, v = passage.sleeper_spacing, float(passage.wagon_length), float(passage.speed)
+    cell_length = n_sl * span
+    ratio = wagon / cell_length
+    groups = int(round(ratio))
+    if abs(ratio - groups) > 1e-9 or groups < 1:
+        raise ValueError(f"the wagon length H = {wagon} m must be a whole number of cells "
+                         f"(N L = {cell_length} m) for a periodic state with wheels")
+    base = 2 * np.pi * v / wagon
+    omega = base * np.arange(m + 1)
+    sleeper_weight, rail_weight = cell.weights(passage)
+    ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, omega,
+                         sleeper_weight=sleeper_weight, rail_weight=rail_weight)
+    grid = groups * np.arange(1, m // groups + 1)
+    positions = np.asarray(passage.axle_positions, dtype=float)
+    j = np.arange(n_sl)
+    a = bending_wavenumber(passage, omega) * span                         # (m+1,)
+    signed = np.concatenate([grid, -grid])                                # two-sided p != 0
+    kappa = 2 * np.pi * (signed[None, :] - np.arange(m + 1)[:, None]) / wagon   # (m+1, P)
+    gap = contact_gap(a[:, None], kappa * span)
+    mode = (-signed // groups) % n_sl                                      # s = -p/G mod N
+    mode_phase = omega[:, None] * span / v + 2 * np.pi * mode[None, :] / n_sl
+    basis = np.exp(-1j * j[None, None, :] * mode_phase[..., None]) / np.sqrt(n_sl)  # (m+1,P,N)
+    factor = (-4.0 * np.sqrt(n_sl) * span / wagon * gap[..., None]
+              * np.exp(1j * kappa[..., None] * positions))                # (m+1, P, K)
+    load = np.einsum("npj,npk->njkp", basis, factor)
+    harmonic = np.arange(-m, m + 1)
+    omega2 = base * harmonic
+    kb4 = bending_wavenumber(passage, omega2) ** 4
+    ei = float(passage.rail_bending_stiffness)
+    kap = omega2[None, :] / v - 2 * np.pi * (grid[:, None] / groups) / cell_length   # (L, 2m+1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        weight = 1.0 / (ei * cell_length * (kap**4 - kb4[None, :]))
+    place = positions[:, None] + j[None, :] * span                        # (K, N)
+    from_sleepers = weight[:, None, :, None] * np.exp(1j * kap[:, None, :, None]
+                                                      * place[None, :, None, :])
+    offsets = positions[None, :] - positions[:, None]                      # d_k' - d_k
+    between = np.stack([wheel_train_receptance(passage, base * p, offsets) for p in grid])
+    mobility = -1.0 / (wheel.unsprung_mass * (base * grid) ** 2)
+    return WheelSystem(ops, grid, load, from_sleepers, between, mobility, int(samples),
+                       np.asarray(sleeper_weight, dtype=float))
+
+
+def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
+                   coefficients: np.ndarray, forces: np.ndarray, lift: np.ndarray):
+    """Residuals (sleepers (m+1, N) [N], contacts (K, lmax+1) [N]) and the contact histories.
+
+    Parameters
+    ----------
+    coefficients : ndarray, shape (N, m+1)
+        c_{j,n} [m].
+    forces : ndarray, shape (K, lmax)
+        P_{k,p} at p = grid [N].
+    lift : ndarray, shape (K,)
+        y_k = mean wheel height minus the rail's mean under it [m].
+    """
+    ops, grid, samples = system.ops, system.grid, system.samples
+    m = ops.omega.size - 1
+    w, v = _synthesize(coefficients, ops.omega, samples)
+    spectrum = np.fft.rfft(_forces(cell, w, v), axis=-1)[:, :m + 1] / samples
+    seat = -cell.sleeper_mass[:, None] * ops.omega**2 * coefficients + spectrum
+    two = np.concatenate([forces, np.conj(forces)], axis=1)               # (K, 2 lmax)
+    wheels = np.einsum("njkp,kp->nj", system.load, two)
+    sleepers = (np.einsum("nab,bn->na", ops.first, coefficients)
+                + np.einsum("nab,bn->na", ops.second, seat) - ops.load - wheels)
+    pads = seat.copy()
+    pads[:, 0] += system.sleeper_weight            # the pad also carries the sleeper's weight
+    reaction = -np.concatenate([np.conj(pads[:, :0:-1]), pads], axis=1)   # (N, 2m+1), R = -p
+    rail = (np.einsum("lknj,jn->kl", system.from_sleepers, reaction)
+            - np.einsum("lkq,ql->kl", system.between_wheels, forces))
+    wheel_z = system.wheel_mobility * forces                               # (K, lmax)
+    lmax = grid.size
+    period = float(passage.period)
+    t = np.arange(samples) * period / samples
+    spectrum_delta = np.zeros((forces.shape[0], samples // 2 + 1), dtype=complex)
+    spectrum_delta[:, grid] = (rail - wheel_z) * samples
+    delta = np.fft.irfft(spectrum_delta, samples, axis=-1) + lift[:, None]
+    positions = np.asarray(passage.axle_positions, dtype=float)
+    delta += np.asarray(profile(float(passage.speed) * t[None, :] - positions[:, None]))
+    hertz = wheel.contact_force(delta)
+    harmonics = np.fft.rfft(hertz, axis=-1) / samples
+    contacts = np.empty((forces.shape[0], lmax + 1), dtype=complex)
+    contacts[:, 0] = harmonics[:, 0].real - np.asarray(passage.axle_loads)
+    contacts[:, 1:] = harmonics[:, grid] - forces
+    return sleepers, contacts, delta, hertz
+
