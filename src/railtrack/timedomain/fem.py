@@ -41,6 +41,7 @@ __all__ = [
     "ring_mesh",
     "wheel_positions",
     "wheel_load_entries",
+    "contact_shapes",
 ]
 
 RING_TOLERANCE = 1e-9
@@ -288,13 +289,23 @@ def wheel_load_entries(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np
     values : ndarray, shape (n_t, 4 J)
         Nodal forces [N] and moments [N m].
     """
+    dofs, shapes = contact_shapes(mesh, times)
+    loads = np.asarray(mesh.passage.axle_loads, dtype=float)
+    values = -loads[None, :, None] * shapes
+    n_t = dofs.shape[0]
+    return dofs.reshape(n_t, -1), values.reshape(n_t, -1)
+
+
+def contact_shapes(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """Rail DOFs (n_t, J, 4) and Hermite weights N(xi) (n_t, J, 4) under each wheel.
+
+    Shared by `wheel_load_entries` and `railtrack.timedomain.ring_wheels`, so a
+    wheel carrying exactly Q loads the rail as the constant force does.
+    """
     x = wheel_positions(mesh.passage, times)
     h = mesh.element_length
     element = np.minimum(np.floor(x / h).astype(int), mesh.n_nodes - 1)
     xi = np.clip(x / h - element, 0.0, 1.0)
     following = (element + 1) % mesh.n_nodes
     dofs = np.stack([2 * element, 2 * element + 1, 2 * following, 2 * following + 1], axis=-1)
-    loads = np.asarray(mesh.passage.axle_loads, dtype=float)
-    values = -loads[None, :, None] * hermite_shape_functions(xi, h)
-    n_t = x.shape[0]
-    return dofs.reshape(n_t, -1), values.reshape(n_t, -1)
+    return dofs, hermite_shape_functions(xi, h)

@@ -11,34 +11,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from .fem import RingMesh, hermite_shape_functions, wheel_positions
+from .fem import RingMesh, wheel_positions
 
-__all__ = ["contact_shapes", "profile_on_ring", "loss_of_contact"]
+__all__ = ["profile_on_ring", "loss_of_contact"]
 
 _REPEAT_TOLERANCE = 1e-9
 """Largest |ring length / profile period - integer| accepted [-]."""
-
-
-def contact_shapes(mesh: RingMesh, times) -> tuple[np.ndarray, np.ndarray]:
-    """Rail DOFs and Hermite weights of every wheel's contact point at each time.
-
-    The element and local coordinate are those of
-    `railtrack.timedomain.fem.wheel_load_entries`, so that a wheel carrying
-    exactly Q loads the rail exactly as the constant force does.
-
-    Returns
-    -------
-    dofs : ndarray of int, shape (n_t, J, 4)
-    shapes : ndarray, shape (n_t, J, 4)
-        N(xi) of (w_a, theta_a, w_b, theta_b) [-, m].
-    """
-    x = wheel_positions(mesh.passage, times)
-    h = mesh.element_length
-    element = np.minimum(np.floor(x / h).astype(int), mesh.n_nodes - 1)
-    xi = np.clip(x / h - element, 0.0, 1.0)
-    following = (element + 1) % mesh.n_nodes
-    dofs = np.stack([2 * element, 2 * element + 1, 2 * following, 2 * following + 1], axis=-1)
-    return dofs, hermite_shape_functions(xi, h)
 
 
 def profile_on_ring(profile, mesh: RingMesh, times, wagons: int = 1) -> np.ndarray:

@@ -29,10 +29,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from .newmark import CondensedSystem, NewmarkStepper, _sleeper_projector, evaluate_law
-from .ring_contact import contact_shapes, profile_on_ring
 from ..model.profile import smooth_rail
 from ..model.wheel import Wheel
+from .fem import contact_shapes
+from .newmark import CondensedSystem, NewmarkStepper, _sleeper_projector, evaluate_law
+from .ring_contact import profile_on_ring
 
 __all__ = ["check_wheel_arguments", "attach_wheels", "WheelStepper", "solve_contacts"]
 
