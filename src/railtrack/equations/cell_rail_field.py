@@ -35,7 +35,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..model.passage import Passage
-from .cell_receptance import cell_moving_load
+from .cell_receptance import cell_moving_load, floquet_parts
 from .receptance import bending_wavenumber
 
 __all__ = ["cell_offset_receptance", "cell_rail_field_coefficients"]
@@ -77,17 +77,7 @@ def cell_offset_receptance(passage: Passage, omega: ArrayLike, sleepers: int, d:
     if derivative not in (0, 2):
         raise ValueError(f"derivative must be 0 or 2; got {derivative!r}")
     k = bending_wavenumber(passage, omega)
-    theta = omega * cell / passage.speed
-    back = np.exp(-1j * theta)
-    kc = k * cell
-    trig_den = -2.0 * np.sin(0.5 * (kc + theta)) * np.sin(0.5 * (kc - theta))
-    decay = np.exp(-kc)
-    hyp_den = np.expm1(-kc) ** 2 + 4.0 * decay * np.sin(0.5 * theta) ** 2
-    trig = (np.sin(k * (cell - d)) + back * np.sin(k * d)) / trig_den
-    # sinh k(Lambda-d) + e^{-i theta} sinh kd over cosh k Lambda - cos theta, scaled by
-    # 2 e^{-k Lambda}: never overflows
-    hyp = (-np.exp(-k * d) * np.expm1(-2.0 * k * (cell - d))
-           - back * np.exp(-k * (cell - d)) * np.expm1(-2.0 * k * d)) / hyp_den
+    trig, hyp, _, _ = floquet_parts(k, omega * cell / passage.speed, cell, d)
     ei = passage.rail_bending_stiffness
     if derivative == 0:
         return (trig - hyp) / (4.0 * ei * k**3)

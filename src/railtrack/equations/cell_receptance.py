@@ -51,6 +51,7 @@ __all__ = [
     "cell_receptance",
     "cell_receptance_lattice_sum",
     "cell_receptance_modes",
+    "floquet_parts",
 ]
 
 
@@ -68,6 +69,24 @@ def _assemble(h: np.ndarray, theta: np.ndarray, n: int) -> np.ndarray:
     m = j[:, None] - j[None, :]
     twist = np.where(m < 0, np.exp(1j * theta)[..., None, None], 1.0)
     return h[..., m % n] * twist
+
+
+def floquet_parts(k, theta, cell: float, d):
+    """The two bracketed ratios of the closed form, 0 <= d <= Lambda (module docstring).
+
+    ``trig = [sin k(Lambda-d) + e^{-i theta} sin kd] / (cos k Lambda - cos theta)`` and
+    ``hyp`` the same with sinh, cosh, both scaled by 2 e^{-k Lambda} in numerator and
+    denominator so that nothing overflows; ``4 EI k^3 eta(d) = trig - hyp``.  Also
+    returns the two denominators (zero where eta is infinite).  Arguments broadcast.
+    """
+    back = np.exp(-1j * theta)
+    kc = k * cell
+    trig_den = -2.0 * np.sin(0.5 * (kc + theta)) * np.sin(0.5 * (kc - theta))
+    hyp_den = np.expm1(-kc) ** 2 + 4.0 * np.exp(-kc) * np.sin(0.5 * theta) ** 2
+    trig = (np.sin(k * (cell - d)) + back * np.sin(k * d)) / trig_den
+    hyp = (-np.exp(-k * d) * np.expm1(-2.0 * k * (cell - d))
+           - back * np.exp(-k * (cell - d)) * np.expm1(-2.0 * k * d)) / hyp_den
+    return trig, hyp, trig_den, hyp_den
 
 
 def cell_receptance(passage: Passage, omega: ArrayLike, sleepers: int) -> np.ndarray:
@@ -118,15 +137,8 @@ def cell_receptance(passage: Passage, omega: ArrayLike, sleepers: int) -> np.nda
     theta = omega * cell / passage.speed
     th = theta[..., None]
     d = np.arange(n) * passage.sleeper_spacing
-    back = np.exp(-1j * th)
-    kc = k * cell
-    trig_den = -2.0 * np.sin(0.5 * (kc + th)) * np.sin(0.5 * (kc - th))
-    decay = np.exp(-kc)
-    hyp_den = np.expm1(-kc) ** 2 + 4.0 * decay * np.sin(0.5 * th) ** 2
     with np.errstate(divide="ignore", invalid="ignore"):
-        trig = (np.sin(k * (cell - d)) + back * np.sin(k * d)) / trig_den
-        hyp = (-np.exp(-k * d) * np.expm1(-2.0 * k * (cell - d))
-               - back * np.exp(-k * (cell - d)) * np.expm1(-2.0 * k * d)) / hyp_den
+        trig, hyp, trig_den, hyp_den = floquet_parts(k, th, cell, d)
         h = (trig - hyp) / (4.0 * passage.rail_bending_stiffness * k**3)
     singular = ((trig_den == 0.0) | (hyp_den == 0.0) | (k == 0.0))[..., 0]
     out = _assemble(np.where(singular[..., None], 0.0, h), theta, n)
