@@ -4,7 +4,8 @@ The verification model of `railtrack.timedomain.simulation` discretises the same
 as the semi-analytical method, but in space and time:
 
 * the rail, an Euler–Bernoulli beam (eq. 1), by Hermite cubic elements with
-  the consistent mass matrix, ``elements_per_span`` per sleeper span;
+  the consistent mass matrix, ``elements_per_span`` per sleeper span (or a
+  Timoshenko beam); the elements are in `railtrack.timedomain.rail_elements`;
 * each sleeper, a point mass M (eq. 4), joined to the rail node above it by
   the pad spring–dashpot k1, eta1 (eqs. 4–5);
 * the moving wheels, as consistent nodal loads: each wheel load -Q is spread
@@ -20,7 +21,7 @@ only nonlinear part.
 Degrees of freedom: rail node j (at x = j h, h = L / elements_per_span) has
 deflection ``2 j`` and rotation ``2 j + 1``; sleeper i (at x = i L, under
 rail node ``i * elements_per_span``) has ``2 * n_nodes + i``.  w is positive
-upward, rotations are dw/dx.  All units SI.
+upward, rotations are dw/dx (the sections' psi for a Timoshenko rail).  All units SI.
 """
 
 from __future__ import annotations
@@ -32,6 +33,9 @@ import scipy.sparse as sp
 from numpy.typing import ArrayLike
 
 from ..model.passage import Passage
+from ..model.timoshenko import TimoshenkoRail
+from .rail_elements import (beam_element_matrices, hermite_shape_functions, shear_parameter,
+                            timoshenko_element_matrices, timoshenko_shape_functions)
 
 __all__ = [
     "RingMesh",
@@ -42,6 +46,7 @@ __all__ = [
     "wheel_positions",
     "wheel_load_entries",
     "contact_shapes",
+    "rail_shapes",
 ]
 
 RING_TOLERANCE = 1e-9
@@ -77,66 +82,6 @@ def _not_integer(ratio: float) -> str:
     return repr(ratio)
 
 
-def hermite_shape_functions(xi: ArrayLike, length: float) -> np.ndarray:
-    """Hermite cubics of a beam element at local coordinate xi in [0, 1].
-
-    Parameters
-    ----------
-    xi : array_like
-        Position in the element divided by its length [-].
-    length : float
-        Element length h [m].
-
-    Returns
-    -------
-    ndarray, shape (..., 4)
-        Weights of (w_a, theta_a, w_b, theta_b): the deflection at xi is their
-        dot product with the nodal values.  The rotation shapes carry the
-        factor h so that theta is dw/dx [rad].
-    """
-    xi = np.asarray(xi, dtype=float)
-    xi2, xi3 = xi * xi, xi * xi * xi
-    return np.stack(
-        [
-            1.0 - 3.0 * xi2 + 2.0 * xi3,
-            length * (xi - 2.0 * xi2 + xi3),
-            3.0 * xi2 - 2.0 * xi3,
-            length * (xi3 - xi2),
-        ],
-        axis=-1,
-    )
-
-
-def beam_element_matrices(
-    bending_stiffness: float, linear_mass: float, length: float
-) -> tuple[np.ndarray, np.ndarray]:
-    """Stiffness [N/m, N, N m] and consistent mass [kg, kg m, kg m^2] of one element, eq. (1).
-
-    The classical 4 x 4 matrices of the Hermite cubic Euler–Bernoulli element
-    for DOFs (w_a, theta_a, w_b, theta_b).  Between point forces the static
-    beam deflection is a cubic, so nodal values of a static solution are
-    exact; only the inertia is approximated.
-    """
-    h = length
-    stiffness = bending_stiffness / h**3 * np.array(
-        [
-            [12.0, 6.0 * h, -12.0, 6.0 * h],
-            [6.0 * h, 4.0 * h * h, -6.0 * h, 2.0 * h * h],
-            [-12.0, -6.0 * h, 12.0, -6.0 * h],
-            [6.0 * h, 2.0 * h * h, -6.0 * h, 4.0 * h * h],
-        ]
-    )
-    mass = linear_mass * h / 420.0 * np.array(
-        [
-            [156.0, 22.0 * h, 54.0, -13.0 * h],
-            [22.0 * h, 4.0 * h * h, 13.0 * h, -3.0 * h * h],
-            [54.0, 13.0 * h, 156.0, -22.0 * h],
-            [-13.0 * h, -3.0 * h * h, -22.0 * h, 4.0 * h * h],
-        ]
-    )
-    return stiffness, mass
-
-
 @dataclass(frozen=True, eq=False)
 class RingMesh:
     """Linear part of the ring: rail, pads and sleeper masses, without the foundation.
@@ -160,6 +105,9 @@ class RingMesh:
     sleeper_mass, pad_stiffness, pad_damping : ndarray, shape (n_sleepers,)
         M_i [kg], k1_i [N/m], eta1_i [N s/m] of ring sleeper i and its pad:
         the passage's on every sleeper, or a cell's (`railtrack.timedomain.ring_cell`).
+    timoshenko : TimoshenkoRail or None
+        The rail's shear stiffness and rotary inertia if its elements are
+        Timoshenko's; None for Hermite (Euler–Bernoulli) elements.
     """
 
     passage: Passage
@@ -174,6 +122,15 @@ class RingMesh:
     sleeper_mass: np.ndarray | None = None
     pad_stiffness: np.ndarray | None = None
     pad_damping: np.ndarray | None = None
+    timoshenko: TimoshenkoRail | None = None
+
+    @property
+    def shear_parameter(self) -> float | None:
+        """Phi = 12 EI / (kappa G A h^2) of the Timoshenko elements [-]; None for Hermite ones."""
+        if self.timoshenko is None:
+            return None
+        return shear_parameter(self.passage.rail_bending_stiffness,
+                               self.timoshenko.shear_stiffness, self.element_length)
 
     @property
     def n_nodes(self) -> int:
@@ -186,7 +143,8 @@ class RingMesh:
 
 
 def ring_mesh(passage: Passage, elements_per_span: int,
-              sleepers: tuple[ArrayLike, ArrayLike, ArrayLike] | None = None) -> RingMesh:
+              sleepers: tuple[ArrayLike, ArrayLike, ArrayLike] | None = None,
+              timoshenko: TimoshenkoRail | None = None) -> RingMesh:
     """Assemble M, C, K of the ring of length H (see the module docstring).
 
     Parameters
@@ -196,14 +154,22 @@ def ring_mesh(passage: Passage, elements_per_span: int,
     sleepers : (mass, pad_stiffness, pad_damping), each of shape (H / L,), optional
         M_i [kg], k1_i [N/m], eta1_i [N s/m] of each ring sleeper and its pad
         (a cell of differing sleepers); default the passage's on every one.
+    timoshenko : TimoshenkoRail, optional
+        Timoshenko rail elements (`railtrack.timedomain.rail_elements`) with this shear
+        stiffness and rotary inertia; default Hermite (Euler–Bernoulli) ones.
 
     Raises
     ------
     ValueError
         If H / L is not an integer (`sleepers_on_ring`), or `sleepers` has
         arrays of another length.
+    TypeError
+        If `timoshenko` is not a TimoshenkoRail.
     """
     n_sleepers = sleepers_on_ring(passage)
+    if timoshenko is not None and not isinstance(timoshenko, TimoshenkoRail):
+        raise TypeError("timoshenko must be a railtrack.model.timoshenko.TimoshenkoRail or None; "
+                        f"got {type(timoshenko).__name__}")
     if sleepers is None:
         sleepers = (passage.sleeper_mass, passage.pad_stiffness, passage.pad_damping)
     masses, pad_k, pad_c = (np.array(np.broadcast_to(np.asarray(value, dtype=float), n_sleepers))
@@ -211,9 +177,11 @@ def ring_mesh(passage: Passage, elements_per_span: int,
     n_nodes = n_sleepers * elements_per_span
     n_dofs = 2 * n_nodes + n_sleepers
     h = float(passage.sleeper_spacing) / elements_per_span
-    k_element, m_element = beam_element_matrices(
-        float(passage.rail_bending_stiffness), float(passage.rail_linear_mass), h
-    )
+    beam = (float(passage.rail_bending_stiffness), float(passage.rail_linear_mass))
+    if timoshenko is None:
+        k_element, m_element = beam_element_matrices(*beam, h)
+    else:
+        k_element, m_element = timoshenko_element_matrices(*beam, timoshenko, h)
 
     # Element e joins node e to node e + 1, and the last element closes the
     # ring on node 0: that identification is the periodic boundary condition.
@@ -250,6 +218,7 @@ def ring_mesh(passage: Passage, elements_per_span: int,
         sleeper_mass=masses,
         pad_stiffness=pad_k,
         pad_damping=pad_c,
+        timoshenko=timoshenko,
     )
 
 
@@ -297,7 +266,7 @@ def wheel_load_entries(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np
 
 
 def contact_shapes(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
-    """Rail DOFs (n_t, J, 4) and Hermite weights N(xi) (n_t, J, 4) under each wheel.
+    """Rail DOFs (n_t, J, 4) and weights N(xi) (n_t, J, 4) under each wheel (`rail_shapes`).
 
     Shared by `wheel_load_entries` and `railtrack.timedomain.ring_wheels`, so a
     wheel carrying exactly Q loads the rail as the constant force does.
@@ -308,4 +277,12 @@ def contact_shapes(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np.nda
     xi = np.clip(x / h - element, 0.0, 1.0)
     following = (element + 1) % mesh.n_nodes
     dofs = np.stack([2 * element, 2 * element + 1, 2 * following, 2 * following + 1], axis=-1)
-    return dofs, hermite_shape_functions(xi, h)
+    return dofs, rail_shapes(mesh, xi)
+
+
+def rail_shapes(mesh: RingMesh, xi: ArrayLike) -> np.ndarray:
+    """The mesh's element interpolation of w at xi, shape (..., 4): the Hermite cubics, or a
+    Timoshenko element's N_w (`rail_elements.timoshenko_shape_functions`, eq. T2)."""
+    if mesh.timoshenko is None:
+        return hermite_shape_functions(xi, mesh.element_length)
+    return timoshenko_shape_functions(xi, mesh.element_length, mesh.shear_parameter)

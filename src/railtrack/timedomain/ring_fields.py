@@ -6,9 +6,10 @@ differing sleepers (issue 19) needs them for every ring sleeper i:
 * the rail-seat load k1_i (w_i - w_r,i) + eta1_i (w_i - w_r,i)', positive in
   compression, with w_r,i the rail node above sleeper i;
 * the force on its foundation -f_i(w_i, w_i'), positive in compression;
-* the rail's bending moment EI w'' above sleeper i (the mean of the two
-  adjacent elements' end curvatures, as `ring_outputs`) and at the mid-span
-  between sleepers i and i + 1, sagging positive.
+* the rail's bending moment EI w'' (EI psi' for a Timoshenko rail) above
+  sleeper i (the mean of the two adjacent elements' end curvatures, as
+  `ring_outputs`) and at the mid-span between sleepers i and i + 1, sagging
+  positive.
 
 Moments and the pad's compression are linear in the nodal state, so they are
 rows of two sparse operators applied once per step (`SleeperRecorder`); the
@@ -21,12 +22,16 @@ import numpy as np
 import scipy.sparse as sp
 
 from .fem import RingMesh
+from .rail_elements import timoshenko_curvature_weights
 
 __all__ = ["moment_operators", "SleeperRecorder"]
 
 
-def _curvature(xi: float, h: float) -> np.ndarray:
-    """d^2/dx^2 of the Hermite cubics at xi: weights of (w_a, theta_a, w_b, theta_b)."""
+def _curvature(xi: float, h: float, phi: float | None = None) -> np.ndarray:
+    """d^2/dx^2 of the Hermite cubics at xi: weights of (w_a, theta_a, w_b, theta_b)
+    (psi' of a Timoshenko element of shear parameter `phi`)."""
+    if phi is not None:
+        return timoshenko_curvature_weights(xi, h, phi)
     return np.array([(-6.0 + 12.0 * xi) / h**2, (-4.0 + 6.0 * xi) / h,
                      (6.0 - 12.0 * xi) / h**2, (-2.0 + 6.0 * xi) / h])
 
@@ -49,7 +54,7 @@ def moment_operators(mesh: RingMesh) -> tuple[sp.csr_matrix, sp.csr_matrix]:
         `elements_per_span`, at a node (the same mean) for an even one.
     """
     e, n, h = mesh.elements_per_span, mesh.n_nodes, mesh.element_length
-    ei = float(mesh.passage.rail_bending_stiffness)
+    ei, phi = float(mesh.passage.rail_bending_stiffness), mesh.shear_parameter
     rows = np.arange(mesh.n_sleepers)
     shape = (mesh.n_sleepers, mesh.n_dofs)
 
@@ -57,7 +62,7 @@ def moment_operators(mesh: RingMesh) -> tuple[sp.csr_matrix, sp.csr_matrix]:
         left = _element_dofs((nodes - 1) % n, n)
         right = _element_dofs(nodes, n)
         cols = np.concatenate([left, right], axis=1)
-        values = 0.5 * ei * np.concatenate([_curvature(1.0, h), _curvature(0.0, h)])
+        values = 0.5 * ei * np.concatenate([_curvature(1.0, h, phi), _curvature(0.0, h, phi)])
         return sp.csr_matrix((np.tile(values, nodes.size), (np.repeat(rows, 8), cols.ravel())),
                              shape)
 
@@ -67,7 +72,7 @@ def moment_operators(mesh: RingMesh) -> tuple[sp.csr_matrix, sp.csr_matrix]:
         midspan = node_rows(e * rows + element)
     else:
         cols = _element_dofs(e * rows + element, n)
-        midspan = sp.csr_matrix((np.tile(ei * _curvature(xi, h), rows.size),
+        midspan = sp.csr_matrix((np.tile(ei * _curvature(xi, h, phi), rows.size),
                                  (np.repeat(rows, 4), cols.ravel())), shape)
     return above, midspan
 

@@ -3,10 +3,11 @@
 With a `railtrack.model.wheel.Wheel`, every axle j of the ring's train is a
 wheel DOF z_j (positive upward) instead of a constant force.  Its contact
 point x_c = v t - d_j (mod the ring's length) lies in one rail element,
-whose Hermite shape functions N(xi) (`railtrack.timedomain.fem`) give the
-rail's displacement there, u_c = N . u_e, and spread the contact force on
-it, -P N (the consistent load).  With the rail-top profile r(x) fixed on
-the ring (`railtrack.model.profile`):
+whose shape functions N(xi) (Hermite cubics, or a Timoshenko element's N_w:
+`railtrack.timedomain.fem.rail_shapes`) give the rail's displacement there,
+u_c = N . u_e, and spread the contact force on it, -P N (the consistent
+load).  With the rail-top profile r(x) fixed on the ring
+(`railtrack.model.profile`):
 
     delta_j = u_c,j + r(x_c,j) - z_j,      P_j = C_H max(delta_j, 0)^{3/2},
     m_w z_j'' + c_p z_j' + k_p z_j = P_j - Q_j.

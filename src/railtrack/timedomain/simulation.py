@@ -93,6 +93,7 @@ def simulate_time_domain(
     wagons: int = 1,
     wheel=None,
     profile=None,
+    timoshenko=None,
 ) -> TimeDomainSolution:
     """Periodic steady response of the track by finite elements and Newmark time stepping.
 
@@ -186,6 +187,12 @@ def simulate_time_domain(
         Rail-top profile r(x) [m] fixed on the ring (`railtrack.model.profile`),
         which the wheels roll on; it must repeat with the ring's length
         wagons x H.  Needs `wheel`; default the smooth rail.
+    timoshenko : railtrack.model.timoshenko.TimoshenkoRail, optional
+        A Timoshenko rail (shear stiffness, rotary inertia) of two-node
+        interdependent-interpolation elements (`railtrack.timedomain.rail_elements`),
+        whose own interpolation carries the wheels; default the Euler–Bernoulli
+        rail.  The time-step error estimate and a harmonic-balance start stay
+        those of the Euler–Bernoulli rail.
 
     Returns
     -------
@@ -251,13 +258,13 @@ def simulate_time_domain(
     if isinstance(foundation, SleeperCell):
         n_ring = sleepers_on_ring(passage)
         cell = ring_cell(foundation, n_ring, wagons, n_ring // wagons)
-        mesh = ring_mesh(passage, elements_per_span, cell.sleepers)
+        mesh = ring_mesh(passage, elements_per_span, cell.sleepers, timoshenko)
         law, first_law = cell.law, foundation.foundations[0]
         reference = cell.law.reference()
         k0, pad = float(np.mean(reference[0])), float(np.mean(cell.pad_stiffness))
     else:
         law = first_law = foundation = as_foundation(foundation)
-        mesh = ring_mesh(passage, elements_per_span)
+        mesh = ring_mesh(passage, elements_per_span, timoshenko=timoshenko)
         reference = k0, _ = reference_law(foundation)
         pad = float(passage.pad_stiffness)
     n_steps, dt = steps_per_period, float(passage.period) / steps_per_period

@@ -1,0 +1,260 @@
+"""Timoshenko rail elements in the finite-element ring (issue 20).
+
+Independent truths used here:
+* the static Timoshenko beam, solved in the test for each end value (w cubic,
+  psi = w' + (EI/kGA) w''', from EI psi'' + kGA (w' - psi) = 0 and
+  (kGA (w' - psi))' = 0), and its strain and kinetic energies integrated by
+  Gauss quadrature: the element's shape functions and matrices;
+* the Euler–Bernoulli Hermite element (`beam_element_matrices`, its own
+  formula) in the limit Phi -> 0, rho I = 0;
+* the cantilever's closed-form tip deflection P l^3/(3 EI) + P l/kGA and
+  rotation P l^2/(2 EI), and the deflection under a load inside the span;
+* the simply supported span's first frequency (the pinned-pinned frequency,
+  `pinned_pinned_frequency`, checked in tests/test_timoshenko.py against the
+  coupled equations' determinant) against the ring pinned at its sleepers;
+* the unchanged Euler–Bernoulli ring, and the Timoshenko ring in the limit
+  kGA -> inf, rho I = 0.
+"""
+
+import numpy as np
+import pytest
+import scipy.linalg as sl
+
+from railtrack import LinearFoundation, Track, Train
+from railtrack.equations.timoshenko_receptance import pinned_pinned_frequency
+from railtrack.model.passage import Passage
+from railtrack.model.profile import CosineDip
+from railtrack.model.timoshenko import TimoshenkoRail
+from railtrack.model.wheel import Wheel
+from railtrack.timedomain.fem import rail_shapes, ring_mesh
+from railtrack.timedomain.rail_elements import (
+    beam_element_matrices,
+    hermite_shape_functions,
+    shear_parameter,
+    timoshenko_curvature_weights,
+    timoshenko_element_matrices,
+    timoshenko_rotation_shapes,
+    timoshenko_shape_functions,
+)
+from railtrack.timedomain.ring_fields import moment_operators
+from railtrack.timedomain.simulation import simulate_time_domain
+
+EI, RHO_S = 6.3e6, 60.0            # the paper's rail
+UIC60 = TimoshenkoRail.uic60()
+
+
+def static_shapes(ei, kga, h, x):
+    """w and psi at x of the static Timoshenko beam for each unit end value (w_a, psi_a, w_b,
+    psi_b), and w', psi': w = c0 + c1 x + c2 x^2 + c3 x^3, psi = w' + 6 c3 EI/kGA."""
+    s = ei / kga
+
+    def rows(x):
+        x = np.asarray(x, dtype=float)
+        one, zero = np.ones_like(x), np.zeros_like(x)
+        w = np.stack([one, x, x**2, x**3], axis=-1)
+        psi = np.stack([zero, one, 2 * x, 3 * x**2 + 6 * s], axis=-1)
+        dw = np.stack([zero, one, 2 * x, 3 * x**2], axis=-1)
+        dpsi = np.stack([zero, zero, 2 * one, 6 * x], axis=-1)
+        return w, psi, dw, dpsi
+
+    w0, p0, _, _ = rows(0.0)
+    w1, p1, _, _ = rows(h)
+    coefficients = np.linalg.inv(np.array([w0, p0, w1, p1]))   # column k: end value k = 1
+    return tuple(part @ coefficients for part in rows(x))
+
+
+def energy_matrices(ei, rho_s, kga, rho_i, h):
+    """K = int EI psi'^T psi' + kGA (w' - psi)^T (w' - psi), M = int rho S w^T w + rho I psi^T psi."""
+    nodes, weights = np.polynomial.legendre.leggauss(6)
+    x, weights = 0.5 * h * (nodes + 1.0), 0.5 * h * weights
+    w, psi, dw, dpsi = static_shapes(ei, kga, h, x)
+    gamma = dw - psi
+
+    def integral(a, b):
+        return np.einsum("q,qi,qj->ij", weights, a, b)
+
+    return (ei * integral(dpsi, dpsi) + kga * integral(gamma, gamma),
+            rho_s * integral(w, w) + rho_i * integral(psi, psi))
+
+
+@pytest.mark.parametrize("rail, h", [(UIC60, 0.075), (UIC60, 0.6), (TimoshenkoRail(5e7, 2.0), 0.2),
+                                     (TimoshenkoRail(1e10, 0.0), 0.3)])
+def test_element_is_the_static_timoshenko_beam_and_its_energies(rail, h):
+    kga, rho_i = rail.shear_stiffness, rail.rotary_inertia
+    stiffness, mass = timoshenko_element_matrices(EI, RHO_S, rail, h)
+    k_ref, m_ref = energy_matrices(EI, RHO_S, kga, rho_i, h)
+    np.testing.assert_allclose(stiffness, k_ref, rtol=1e-9, atol=1e-9 * np.abs(k_ref).max())
+    np.testing.assert_allclose(mass, m_ref, rtol=1e-9, atol=1e-12 * np.abs(m_ref).max())
+    xi = np.linspace(0.0, 1.0, 7)
+    phi = shear_parameter(EI, kga, h)
+    w, psi, _, dpsi = static_shapes(EI, kga, h, xi * h)
+    np.testing.assert_allclose(timoshenko_shape_functions(xi, h, phi), w, atol=1e-12 * h)
+    np.testing.assert_allclose(timoshenko_rotation_shapes(xi, h, phi), psi, atol=1e-9 / h)
+    curvature = np.array([timoshenko_curvature_weights(x, h, phi) for x in xi])
+    np.testing.assert_allclose(curvature, dpsi, atol=1e-9 / h**2)
+
+
+@pytest.mark.parametrize("h", [0.6, 0.075, 0.01])
+def test_zero_shear_parameter_gives_the_hermite_element(h):
+    stiff = TimoshenkoRail(1e30, 0.0)                        # Phi ~ 1e-22
+    stiffness, mass = timoshenko_element_matrices(EI, RHO_S, stiff, h)
+    k_eb, m_eb = beam_element_matrices(EI, RHO_S, h)
+    np.testing.assert_allclose(stiffness, k_eb, rtol=1e-13, atol=1e-13 * np.abs(k_eb).max())
+    np.testing.assert_allclose(mass, m_eb, rtol=1e-13, atol=1e-13 * np.abs(m_eb).max())
+    xi = np.linspace(0.0, 1.0, 9)
+    np.testing.assert_allclose(timoshenko_shape_functions(xi, h, 0.0),
+                               hermite_shape_functions(xi, h), atol=1e-15)
+    step = 1e-4
+    second = (hermite_shape_functions(xi[1:-1] + step, h) - 2 * hermite_shape_functions(xi[1:-1], h)
+              + hermite_shape_functions(xi[1:-1] - step, h)) / (step * h) ** 2
+    curvature = np.array([timoshenko_curvature_weights(x, h, 0.0) for x in xi[1:-1]])
+    np.testing.assert_allclose(curvature, second, rtol=1e-6, atol=1e-6 / h**2)
+
+
+def cantilever(rail, length, elements, load_at=None):
+    """Tip (w, psi) of a cantilever of `elements` Timoshenko elements, clamped at x = 0, under a
+    unit upward force at the tip, or inside the last element at x = load_at."""
+    h = length / elements
+    k_element, _ = timoshenko_element_matrices(EI, RHO_S, rail, h)
+    n = 2 * (elements + 1)
+    stiffness = np.zeros((n, n))
+    for e in range(elements):
+        stiffness[2 * e:2 * e + 4, 2 * e:2 * e + 4] += k_element
+    force = np.zeros(n)
+    if load_at is None:
+        force[-2] = 1.0
+    else:
+        xi = (load_at - (length - h)) / h
+        force[-4:] = timoshenko_shape_functions(xi, h, shear_parameter(EI, rail.shear_stiffness, h))
+    u = np.linalg.solve(stiffness[2:, 2:], force[2:])
+    return u[-2], u[-1]
+
+
+@pytest.mark.parametrize("rail", [UIC60, TimoshenkoRail(3e7, 0.0)])
+@pytest.mark.parametrize("elements", [1, 3, 10])
+def test_cantilever_tip_matches_closed_form(rail, elements):
+    length, kga = 0.6, rail.shear_stiffness
+    w, psi = cantilever(rail, length, elements)
+    bending = length**3 / (3 * EI)
+    assert w == pytest.approx(bending + length / kga, rel=1e-10)
+    assert psi == pytest.approx(length**2 / (2 * EI), rel=1e-10)
+    assert length / kga > 0.05 * bending                      # the shear term is not negligible
+
+
+@pytest.mark.parametrize("a", [0.45, 0.52, 0.599])
+def test_point_load_inside_an_element_gives_exact_nodal_values(a):
+    """The wheels' coupling: the consistent load N_w(xi) of a force at x = a in the last element
+    gives the exact tip deflection a^3/(3 EI) + a^2 (l - a)/(2 EI) + a/kGA."""
+    length, kga = 0.6, UIC60.shear_stiffness
+    w, _ = cantilever(UIC60, length, 4, load_at=a)
+    assert w == pytest.approx(a**3 / (3 * EI) + a**2 * (length - a) / (2 * EI) + a / kga,
+                              rel=1e-10)
+
+
+def pinned_ring_frequency(elements, rail):
+    """Lowest natural frequency [Hz] of the ring's rail with w = 0 at every sleeper."""
+    mesh = ring_mesh(Passage.paper(), elements, timoshenko=rail)
+    keep = np.setdiff1d(np.arange(2 * mesh.n_nodes), mesh.rail_dofs)
+    stiffness = mesh.stiffness[keep][:, keep].toarray()
+    mass = mesh.mass[keep][:, keep].toarray()
+    lowest = sl.eigh(stiffness, mass, eigvals_only=True, subset_by_index=[0, 0])[0]
+    return float(np.sqrt(lowest) / (2 * np.pi))
+
+
+@pytest.mark.parametrize("rail, rate, last", [(None, 16.0, 3e-5), (UIC60, 4.0, 3e-3)])
+def test_pinned_ring_has_the_pinned_pinned_frequency(rail, rate, last):
+    """EB 1413.9 Hz, Timoshenko (UIC60) 1065.3 Hz at L = 0.6 m; the consistent-mass error falls
+    from above as h^4 (EB) and h^2 (Timoshenko: the element's shear strain is constant)."""
+    exact = pinned_pinned_frequency(Passage.paper(), rail)
+    errors = np.array([pinned_ring_frequency(e, rail) / exact - 1.0 for e in (2, 4, 8)])
+    assert np.all(errors > 0.0)
+    assert errors[-1] < last
+    np.testing.assert_allclose(errors[:-1] / errors[1:], rate, rtol=0.25)
+
+
+def test_timoshenko_lowers_the_ring_pinned_pinned_frequency():
+    assert pinned_ring_frequency(8, UIC60) < 0.76 * pinned_ring_frequency(8, None)
+
+
+def test_euler_bernoulli_ring_is_the_default():
+    passage = Passage.paper()
+    default, explicit = ring_mesh(passage, 3), ring_mesh(passage, 3, timoshenko=None)
+    k_eb, m_eb = beam_element_matrices(passage.rail_bending_stiffness, passage.rail_linear_mass,
+                                       passage.sleeper_spacing / 3)
+    for mesh in (default, explicit):
+        assert mesh.timoshenko is None and mesh.shear_parameter is None
+        # element 0 joins rail DOFs 0..3; node 0 also closes the ring (element n-1) and holds a pad
+        block = mesh.stiffness[2:4, 2:4].toarray()
+        np.testing.assert_array_equal(block, k_eb[2:, 2:] + k_eb[:2, :2])
+        np.testing.assert_array_equal(mesh.mass[2:4, 2:4].toarray(), m_eb[2:, 2:] + m_eb[:2, :2])
+        np.testing.assert_array_equal(rail_shapes(mesh, 0.3),
+                                      hermite_shape_functions(0.3, mesh.element_length))
+
+
+def run(timoshenko=None, **options):
+    """The 45 m/s wheels over the 0.5 mm dip on a coarse ring (3 elements per span, 30 steps per
+    sleeper passage): four periods, or until converged to 1e-4 with `max_periods`."""
+    options = dict(dict(wheel=Wheel(600.0), profile=CosineDip(0.5e-3, 1.0, 18.0, centre=9.3),
+                        tol=1e-4, min_periods=4, max_periods=4, warn_step_error=None), **options)
+    return simulate_time_domain(Track.paper(), Train.paper(speed=45.0),
+                                LinearFoundation(20e6, 0.2e6), 3, 900, timoshenko=timoshenko,
+                                **options)
+
+
+OUTPUTS = ("contact_forces", "wheel_displacements", "sleeper_displacements", "rail_seat_loads",
+           "bending_moments_above_sleepers", "bending_moments_midspan",
+           "bending_moment_above_sleeper", "bending_moment_midspan", "rail_displacement_midspan")
+
+
+def test_ring_without_timoshenko_is_unchanged_and_stiff_shear_is_its_limit():
+    plain = simulate_time_domain(Track.paper(), Train.paper(speed=45.0),
+                                 LinearFoundation(20e6, 0.2e6), 3, 900, wheel=Wheel(600.0),
+                                 profile=CosineDip(0.5e-3, 1.0, 18.0, centre=9.3), tol=1e-4,
+                                 min_periods=4, max_periods=4, warn_step_error=None)
+    default, stiff = run(), run(TimoshenkoRail(1e16, 0.0))     # Phi = 7.6e-8
+    assert plain.periods == stiff.periods == 4
+    for name in OUTPUTS:
+        np.testing.assert_array_equal(getattr(default, name), getattr(plain, name))
+        reference = getattr(plain, name)
+        np.testing.assert_allclose(getattr(stiff, name), reference, rtol=0,
+                                   atol=1e-5 * np.abs(reference).max())
+
+
+def test_timoshenko_ring_carries_the_wheels():
+    timoshenko, euler = run(UIC60, max_periods=12), run(max_periods=12)
+    assert timoshenko.converged and euler.converged
+    # the wheels' mean contact force balances their load Q (no primary suspension)
+    np.testing.assert_allclose(timoshenko.contact_forces.mean(axis=0), 75e3, rtol=1e-5)
+    # sleeper 0's moment (ring_outputs) is the first of every sleeper's (ring_fields)
+    for one, every in (("bending_moment_above_sleeper", "bending_moments_above_sleepers"),
+                       ("bending_moment_midspan", "bending_moments_midspan")):
+        np.testing.assert_allclose(getattr(timoshenko, one), getattr(timoshenko, every)[:, 0],
+                                   rtol=1e-12)
+    # the shear-softened rail sags more under the wheels than the EB rail
+    assert timoshenko.rail_under_wheels.min() < euler.rail_under_wheels.min()
+
+
+def test_timoshenko_must_be_a_timoshenko_rail():
+    with pytest.raises(TypeError, match="TimoshenkoRail"):
+        ring_mesh(Passage.paper(), 2, timoshenko=2.5e8)
+
+
+@pytest.mark.parametrize("rail", [UIC60, None])
+def test_ring_force_inside_an_element_loads_the_nodes_exactly(rail):
+    """A static force at x = 0.1 m on a ring of 0.3 m elements (weights `rail_shapes`) gives the
+    nodal deflections of a ring of 0.1 m elements with the force on a node, and the same bending
+    moments above the sleepers (EI psi' is exact in an element with no load inside: all but the
+    coarse ring's element 0, which sleeper 0's moment uses)."""
+    passage = Passage.paper()
+    states = []
+    for elements, xi in ((2, 1.0 / 3.0), (6, 1.0)):
+        mesh = ring_mesh(passage, elements, timoshenko=rail)
+        stiffness = mesh.stiffness.toarray()
+        stiffness[mesh.sleeper_dofs, mesh.sleeper_dofs] += 20e6           # a linear foundation
+        force = np.zeros(mesh.n_dofs)
+        force[:4] = -75e3 * rail_shapes(mesh, xi)
+        u = np.linalg.solve(stiffness, force)
+        above, _ = moment_operators(mesh)
+        states.append((u[0:2 * mesh.n_nodes:2 * (elements // 2)], u[mesh.sleeper_dofs], (above @ u)[1:]))
+    for coarse, fine in zip(*states):
+        np.testing.assert_allclose(coarse, fine, rtol=0, atol=1e-10 * np.abs(fine).max())
