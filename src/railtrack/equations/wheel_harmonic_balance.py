@@ -41,7 +41,8 @@ from .cell_harmonic_balance import _forces, _synthesize, cell_operators
 from .receptance import bending_wavenumber
 from .wheel_train_receptance import wheel_train_receptance
 
-__all__ = ["WheelSystem", "wheel_system", "wheel_residual", "contact_gap"]
+__all__ = ["WheelSystem", "wheel_system", "wheel_residual", "wheel_loads", "rail_under_wheels",
+           "compression", "contact_gap"]
 
 
 def contact_gap(a: np.ndarray, q: np.ndarray) -> np.ndarray:
@@ -59,8 +60,12 @@ class WheelSystem(NamedTuple):
 
     ops: object            # CellOperators at omega_n, n = 0..m
     grid: np.ndarray       # wheel harmonics p = G l, l = 1..lmax
-    load: np.ndarray       # (m+1, N, K, 2 lmax) complex: W for p = +grid then -grid
-    from_sleepers: np.ndarray  # (lmax, K, 2m+1, N): u_{k,p} per R_{j,n}, n = -m..m
+    load_mode: np.ndarray  # (2 lmax,): the Floquet mode s = -p/G mod N that p = +grid, -grid loads
+    load_factor: np.ndarray  # (m+1, 2 lmax, K): W_{n,j,k,p} = basis_{n,j,s(p)} load_factor_{n,p,k}
+    mode_basis: np.ndarray   # (m+1, N_j, N_s): e^{-i j (omega_n L/v + 2 pi s/N)} / sqrt(N)
+    under_wheel: np.ndarray    # (lmax, 2m+1, K): e^{i kappa d_k} / (EI Lambda (kappa^4 - k_n^4))
+    sleeper_phase: np.ndarray  # (2m+1, N): e^{i omega_n x_j / v}
+    mode_of_wheel: np.ndarray  # (lmax,): r_l = p_l / G mod N
     between_wheels: np.ndarray  # (lmax, K, K): D_p(d_k' - d_k)
     wheel_mobility: np.ndarray  # (lmax,): -1/(m_w omega_p^2)
     samples: int
@@ -90,26 +95,53 @@ def wheel_system(passage: Passage, cell, wheel, harmonics: int, samples: int) ->
     kappa = 2 * np.pi * (signed[None, :] - np.arange(m + 1)[:, None]) / wagon   # (m+1, P)
     gap = contact_gap(a[:, None], kappa * span)
     mode = (-signed // groups) % n_sl                                      # s = -p/G mod N
-    mode_phase = omega[:, None] * span / v + 2 * np.pi * mode[None, :] / n_sl
-    basis = np.exp(-1j * j[None, None, :] * mode_phase[..., None]) / np.sqrt(n_sl)  # (m+1,P,N)
     factor = (-4.0 * np.sqrt(n_sl) * span / wagon * gap[..., None]
               * np.exp(1j * kappa[..., None] * positions))                # (m+1, P, K)
-    load = np.einsum("npj,npk->njkp", basis, factor)
-    harmonic = np.arange(-m, m + 1)
-    omega2 = base * harmonic
+    shift = np.exp(-2j * np.pi * np.outer(j, j) / n_sl)                    # e^{-2 pi i j s / N}
+    basis = (np.exp(-1j * omega[:, None] * (j * span)[None, :] / v)[:, :, None]
+             * shift[None] / np.sqrt(n_sl))                                # (m+1, j, s)
+    omega2 = base * np.arange(-m, m + 1)
     kb4 = bending_wavenumber(passage, omega2) ** 4
     ei = float(passage.rail_bending_stiffness)
     kap = omega2[None, :] / v - 2 * np.pi * (grid[:, None] / groups) / cell_length   # (L, 2m+1)
     with np.errstate(divide="ignore", invalid="ignore"):
         weight = 1.0 / (ei * cell_length * (kap**4 - kb4[None, :]))
-    place = positions[:, None] + j[None, :] * span                        # (K, N)
-    from_sleepers = weight[:, None, :, None] * np.exp(1j * kap[:, None, :, None]
-                                                      * place[None, :, None, :])
+    under_wheel = weight[..., None] * np.exp(1j * kap[..., None] * positions)
+    sleeper_phase = np.exp(1j * omega2[:, None] * (j * span)[None, :] / v)
     offsets = positions[None, :] - positions[:, None]                      # d_k' - d_k
-    between = np.stack([wheel_train_receptance(passage, base * p, offsets) for p in grid])
+    between = np.stack([wheel_train_receptance(passage, base * p, offsets) for p in grid]) \
+        if grid.size else np.zeros((0, positions.size, positions.size), dtype=complex)
     mobility = -1.0 / (wheel.unsprung_mass * (base * grid) ** 2)
-    return WheelSystem(ops, grid, load, from_sleepers, between, mobility, int(samples),
+    return WheelSystem(ops, grid, mode, factor, basis, under_wheel, sleeper_phase,
+                       (grid // groups) % n_sl, between, mobility, int(samples),
                        np.asarray(sleeper_weight, dtype=float))
+
+
+def rail_under_wheels(system: WheelSystem, reaction: np.ndarray) -> np.ndarray:
+    """The rail under each wheel from the sleepers' reactions, harmonics p = grid [m].
+
+    ``u_{k,p} = sum_n sum_j e^{i kappa (d_k + x_j)} R_{j,n} / (EI Lambda (kappa^4 - k_n^4))``,
+    kappa = omega_n/v - 2 pi (p/G)/Lambda: with x_j = jL the sum over j is a
+    discrete Fourier transform of ``e^{i omega_n x_j / v} R_{j,n}`` at index p/G mod N.
+
+    Parameters
+    ----------
+    reaction : ndarray, shape (N, 2m+1, ...)
+        R_{j,n}, n = -m..m [N]; trailing axes are carried along.
+
+    Returns
+    -------
+    ndarray, shape (lmax, K, ...)
+    """
+    phased = reaction * system.sleeper_phase.T.reshape(system.sleeper_phase.T.shape
+                                                       + (1,) * (reaction.ndim - 2))
+    spectrum = np.fft.fft(phased, axis=0)                                  # (N, 2m+1, ...)
+    out = np.empty(system.under_wheel.shape[:1] + system.under_wheel.shape[2:]
+                   + reaction.shape[2:], dtype=complex)
+    for r in np.unique(system.mode_of_wheel):
+        rows = np.flatnonzero(system.mode_of_wheel == r)
+        out[rows] = np.tensordot(system.under_wheel[rows], spectrum[r], axes=([1], [0]))
+    return out
 
 
 def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
@@ -130,28 +162,45 @@ def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
     w, v = _synthesize(coefficients, ops.omega, samples)
     spectrum = np.fft.rfft(_forces(cell, w, v), axis=-1)[:, :m + 1] / samples
     seat = -cell.sleeper_mass[:, None] * ops.omega**2 * coefficients + spectrum
-    two = np.concatenate([forces, np.conj(forces)], axis=1)               # (K, 2 lmax)
-    wheels = np.einsum("njkp,kp->nj", system.load, two)
     sleepers = (np.einsum("nab,bn->na", ops.first, coefficients)
-                + np.einsum("nab,bn->na", ops.second, seat) - ops.load - wheels)
+                + np.einsum("nab,bn->na", ops.second, seat) - ops.load
+                - wheel_loads(system, forces))
     pads = seat.copy()
     pads[:, 0] += system.sleeper_weight            # the pad also carries the sleeper's weight
     reaction = -np.concatenate([np.conj(pads[:, :0:-1]), pads], axis=1)   # (N, 2m+1), R = -p
-    rail = (np.einsum("lknj,jn->kl", system.from_sleepers, reaction)
-            - np.einsum("lkq,ql->kl", system.between_wheels, forces))
-    wheel_z = system.wheel_mobility * forces                               # (K, lmax)
-    lmax = grid.size
-    period = float(passage.period)
-    t = np.arange(samples) * period / samples
-    spectrum_delta = np.zeros((forces.shape[0], samples // 2 + 1), dtype=complex)
-    spectrum_delta[:, grid] = (rail - wheel_z) * samples
-    delta = np.fft.irfft(spectrum_delta, samples, axis=-1) + lift[:, None]
-    positions = np.asarray(passage.axle_positions, dtype=float)
-    delta += np.asarray(profile(float(passage.speed) * t[None, :] - positions[:, None]))
+    rail = (rail_under_wheels(system, reaction)
+            - np.einsum("lkq,ql->kl", system.between_wheels, forces).T).T
+    delta = compression(passage, profile, system, rail - system.wheel_mobility * forces, lift)
     hertz = wheel.contact_force(delta)
     harmonics = np.fft.rfft(hertz, axis=-1) / samples
-    contacts = np.empty((forces.shape[0], lmax + 1), dtype=complex)
+    contacts = np.empty((forces.shape[0], grid.size + 1), dtype=complex)
     contacts[:, 0] = harmonics[:, 0].real - np.asarray(passage.axle_loads)
     contacts[:, 1:] = harmonics[:, grid] - forces
     return sleepers, contacts, delta, hertz
 
+
+def wheel_loads(system: WheelSystem, forces: np.ndarray) -> np.ndarray:
+    """W_n P of the module docstring, (m+1, N) [N], for P_{k,p} (K, lmax) at p = grid.
+
+    Each p loads one Floquet mode: the forces are summed per mode, then
+    mapped to the sleepers.
+    """
+    two = np.concatenate([forces, np.conj(forces)], axis=1)               # (K, 2 lmax)
+    by_p = np.einsum("npk,kp->np", system.load_factor, two)
+    n_sl = system.mode_basis.shape[2]
+    by_mode = np.zeros((by_p.shape[0], n_sl), dtype=complex)
+    for s in range(n_sl):
+        by_mode[:, s] = by_p[:, system.load_mode == s].sum(axis=1)
+    return np.einsum("njs,ns->nj", system.mode_basis, by_mode)
+
+
+def compression(passage: Passage, profile, system: WheelSystem, fluctuation: np.ndarray,
+                lift: np.ndarray) -> np.ndarray:
+    """delta_k(t) [m] on the AFT samples from its harmonics p = grid (K, lmax) and y_k."""
+    samples = system.samples
+    spectrum = np.zeros((fluctuation.shape[0], samples // 2 + 1), dtype=complex)
+    spectrum[:, system.grid] = fluctuation * samples
+    t = np.arange(samples) * float(passage.period) / samples
+    positions = np.asarray(passage.axle_positions, dtype=float)
+    return (np.fft.irfft(spectrum, samples, axis=-1) + np.asarray(lift)[:, None]
+            + np.asarray(profile(float(passage.speed) * t[None, :] - positions[:, None])))

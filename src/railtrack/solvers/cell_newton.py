@@ -69,7 +69,8 @@ def _linear_guess(passage: Passage, cell: SleeperCell, ops) -> np.ndarray:
 
 def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: float = 1e-10,
                max_iterations: int = 50, samples: int | None = None,
-               initial: np.ndarray | None = None) -> CellSolution:
+               initial: np.ndarray | None = None,
+               extra_load: np.ndarray | None = None) -> CellSolution:
     """Periodic response of a cell of N sleepers on their own laws, by Newton [m].
 
     Parameters
@@ -89,6 +90,9 @@ def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: floa
     initial : ndarray, shape (N, m+1), optional
         c_{j,0..m} to start from; default: the linear cell with each law's
         ``linearization()``.
+    extra_load : ndarray, shape (m+1, N), optional
+        A load added to g_n [N], in the same mode-scaled rows (the wheels'
+        varying forces, `railtrack.equations.wheel_harmonic_balance.wheel_loads`).
 
     Returns
     -------
@@ -119,6 +123,8 @@ def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: floa
     sleeper_weight, rail_weight = cell.weights(passage)
     ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, omega,
                          sleeper_weight=sleeper_weight, rail_weight=rail_weight)
+    if extra_load is not None:
+        ops = ops._replace(load=ops.load + np.asarray(extra_load))
     if not all(np.all(np.isfinite(x)) for x in ops[1:]):
         raise ValueError("the cell's operators are not finite (eq. 3 overflows); check the "
                          "rail's EI, rho S and L")

@@ -36,6 +36,7 @@ from ..equations.harmonic_balance import HarmonicSystem, residual, residual_norm
 from ..equations.linear import analytic_coefficients
 from .newton import iterate_newton, linear_guess
 from .cell_auto import solve_track_cell
+from .wheel_auto import solve_track_wheels
 from .conditioning import check_conditioning
 from .solution import ConvergenceWarning, Solution
 from .stability_hint import judge_stability
@@ -95,6 +96,8 @@ def solve(
     check_foundation: bool = True,
     fallback: bool = True,
     stability: str = "quick",
+    wheel=None,
+    profile=None,
 ) -> Solution:
     """Periodic response of a sleeper on a (nonlinear) foundation, eqs. (12)–(23).
 
@@ -153,6 +156,15 @@ def solve(
         (`railtrack.solvers.speed_path`) and land on this speed; the message
         says so.  Where several solutions exist this finds one of them:
         `railtrack.continuation` lists them all.  False: give up at once.
+    wheel : Wheel, optional
+        Put a wheel of this unsprung mass on a Hertz spring under every axle
+        (`railtrack.Wheel`); returns a `WheelSolution`
+        (`railtrack.solvers.wheel_auto`): contact forces, wheel and sleeper
+        histories.  Newton only; `accuracy`, `tol` and `strict` apply.
+    profile : callable, optional
+        The rail-top profile r(x) [m] under the wheels (default: smooth;
+        `railtrack.CosineDip` for a dipped weld); it must repeat with the
+        cell of sleepers.
     stability : {"quick", "full", "off"}
         After a converged solve of a nonlinear law, look at its Floquet
         multipliers (`railtrack.solvers.stability_hint`): "quick" warns
@@ -186,6 +198,12 @@ def solve(
     (True, True)
     >>> w = solution.sleeper_displacement([0.0, 0.1])    # metres, w < 0 is down
     """
+    if wheel is not None:
+        return solve_track_wheels(track, train, foundation, wheel, profile, harmonics,
+                                  accuracy=accuracy, tol=1e-9 if tol is None else tol,
+                                  strict=strict)
+    if profile is not None:
+        raise ValueError("a profile is felt through wheels: pass wheel=railtrack.Wheel(...)")
     if isinstance(foundation, SleeperCell):
         return solve_track_cell(track, train, foundation, harmonics, method, accuracy=accuracy,
                                 tol=tol, max_iterations=max_iterations, samples=samples,

@@ -1,21 +1,19 @@
-"""Newton's method for a cell with wheels on Hertz springs (issue 20, first version).
+"""Newton's method for a cell with wheels on Hertz springs (issue 20).
 
 Drives `railtrack.equations.wheel_harmonic_balance.wheel_residual`.  The
-Jacobian is taken by forward differences of the packed residual: good for
-small cells (N = 1, a few hundred unknowns); the exact, structured Jacobian
-is the next step.  Starts from today's constant-force solution of the cell,
-the wheels at their static compression.
-
-Limit of this version: the rail under a wheel is the sum of the free rail
-under the wheels and the sleepers' reactions, and a pair (sleeper harmonic
-n, wheel harmonic p) whose wavenumber meets a free bending wave of the rail
-makes both parts large and opposite.  Where such a pair falls inside the
-truncation the residual cannot be driven below about 1e-6 and the result is
-reported ``converged=False`` (the paper's track at 45 m/s with m = 180: the
-pair n = 127, p = 120); m = 120 there converges to 1e-10 and matches the
-time-domain ring (tests/test_wheel_newton.py).  A finite form of the rail
-under the wheel, as `railtrack.equations.cell_rail_field` has for a fixed
-point, is the next step.
+unknowns split in two: the sleepers' harmonics c_{j,n}, many, and per
+wheel k its contact-force harmonics P_{k,p} (p on the grid G Z) and its
+mean height over the rail y_k, few.  For given wheel forces the sleepers
+are the constant-force cell with one more load, W P
+(`railtrack.solvers.cell_newton.solve_cell`, exact); what remains is the
+contact residual B(P, y) = [C_H max(delta, 0)^{3/2}]_p - P_p (- Q_k at p = 0).
+Its Jacobian is ``H T - I``: H the Hertz tangent 1.5 C_H delta^{1/2} by AFT
+(analysis, times the samples, times synthesis) and T the track's
+receptance under the moving wheels, delta per unit P and y, built once
+per step from the linear map P -> W P -> c -> reactions -> rail under the
+wheels (each sleeper's law replaced by its mean tangent: exact for linear
+laws, a quasi-Newton step for the others).  The residual reported is the
+full one, sleepers and contacts.
 """
 
 from __future__ import annotations
@@ -24,22 +22,28 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..equations.cell_harmonic_balance import pack_harmonics, two_sided_norm, unpack_harmonics
+from ..equations.cell_harmonic_balance import tangent_spectrum
 from ..equations.harmonic_balance import default_samples
-from ..equations.wheel_harmonic_balance import wheel_residual, wheel_system
+from ..equations.wheel_harmonic_balance import (
+    compression,
+    wheel_loads,
+    wheel_residual,
+    wheel_system,
+)
 from ..model.passage import Passage
 from .cell_newton import solve_cell
 
-__all__ = ["WheelSolution", "solve_wheels"]
+__all__ = ["WheelNewton", "solve_wheels", "track_under_wheels"]
 
 
-class WheelSolution(NamedTuple):
+class WheelNewton(NamedTuple):
     """A cell's periodic response with wheels; ``converged`` only if the residual <= tol."""
 
     coefficients: np.ndarray   # (N, 2m+1) c_{j,n}, n = -m..m [m]
     grid: np.ndarray           # wheel harmonics p
     contact_harmonics: np.ndarray  # (K, lmax) P_{k,p} [N]
     lift: np.ndarray           # (K,) y_k [m]
+    compression_harmonics: np.ndarray  # (K, lmax) delta_{k,p} at p = grid [m]
     times: np.ndarray          # (S,) [s]
     compression: np.ndarray    # (K, S) delta_k(t) [m]
     contact_force: np.ndarray  # (K, S) C_H max(delta, 0)^{3/2} [N]
@@ -47,26 +51,126 @@ class WheelSolution(NamedTuple):
     residual: float
     iterations: int
     message: str
-    final_residual: np.ndarray  # the packed, scaled residual (sleepers, then contacts)
+    sleepers: object           # CellSolution of the sleepers under the final wheel forces
 
 
-def _pack(coefficients, forces, lift):
-    return np.concatenate([pack_harmonics(coefficients.T), forces.real.ravel(),
-                           forces.imag.ravel(), lift])
+def track_under_wheels(system, cell, support: np.ndarray) -> np.ndarray:
+    """T: the harmonics of delta per unit wheel force and lift, real (K(2l+1), K(2l+1)) [m/N].
+
+    Per wheel the packing is ``[y or delta_0, Re x_1..l, Im x_1..l]``.
+    ``support`` (m+1, N) [N/m] is each sleeper's dynamic stiffness
+    -M omega^2 + k + i omega eta (the laws' mean tangents).
+
+    A wheel harmonic p loads one Floquet mode s of sleeper harmonic n, and
+    the rail under wheel harmonic p_l reads one discrete Fourier index r_l of
+    the reactions, so T is a sum over n of products through
+    ``Q[n, s, r] = DFT_j(e^{i omega_n x_j/v} (-support_j) (A_n^{-1} basis_s)_j)[r]``,
+    computed once (N x N per harmonic).  For identical sleepers Q is zero
+    unless r = -s (mod N): only those blocks are summed.
+    """
+    ops, lmax, m = system.ops, system.grid.size, system.ops.omega.size - 1
+    k_w = system.between_wheels.shape[1]
+    v_l = system.sleeper_phase                                             # (2m+1, N)
+    solved = np.linalg.solve(ops.first + ops.second * support[:, None, :], system.mode_basis)
+    reaction = -support[:, :, None] * solved                               # (m+1, N_j, N_s)
+    positive = np.fft.fft(v_l[m:, :, None] * reaction, axis=1)             # (m+1, r, s)
+    negative = np.fft.fft(v_l[m::-1, :, None] * np.conj(reaction), axis=1)
+    factor = system.load_factor                                            # (m+1, 2l, K)
+    plus, minus = factor[:, :lmax], factor[:, lmax:]
+    s_plus, s_minus = system.load_mode[:lmax], system.load_mode[lmax:]
+    upper = system.under_wheel[:, m:]                                      # (l, m+1, K)
+    lower = system.under_wheel[:, m::-1]                                   # n = 0, -1, .. -m
+    tail = np.ones(m + 1)
+    tail[0] = 0.0                                                          # n = 0 counted once
+    # coefficients of u and conj(u) for a force u at +p, conj(u) at -p
+    with_u = (_through(upper, positive, s_plus, plus, system.mode_of_wheel)
+              + _through(lower, negative * tail[:, None, None], s_minus, np.conj(minus),
+                         system.mode_of_wheel))
+    with_conj = (_through(upper, positive, s_minus, minus, system.mode_of_wheel)
+                 + _through(lower, negative * tail[:, None, None], s_plus, np.conj(plus),
+                            system.mode_of_wheel))
+    by_re, by_im = with_u + with_conj, 1j * (with_u - with_conj)            # (l, K, l', K')
+    own = (system.between_wheels[:, :, :, None] * np.eye(lmax)[:, None, None, :]
+           + (system.wheel_mobility[:, None, None, None] * np.eye(k_w)[None, :, :, None]
+              * np.eye(lmax)[:, None, None, :]))                           # (l, K, K', l')
+    own = np.transpose(own, (0, 1, 3, 2))                                  # (l, K, l', K')
+    by_re, by_im = by_re - own, by_im - 1j * own
+    size = 2 * lmax + 1
+    out = np.zeros((k_w, size, k_w, size))
+    out[:, 1:lmax + 1, :, 1:lmax + 1] = np.transpose(by_re.real, (1, 0, 3, 2))
+    out[:, lmax + 1:, :, 1:lmax + 1] = np.transpose(by_re.imag, (1, 0, 3, 2))
+    out[:, 1:lmax + 1, :, lmax + 1:] = np.transpose(by_im.real, (1, 0, 3, 2))
+    out[:, lmax + 1:, :, lmax + 1:] = np.transpose(by_im.imag, (1, 0, 3, 2))
+    for k in range(k_w):
+        out[k, 0, k, 0] = 1.0
+    return out.reshape(k_w * size, k_w * size)
 
 
-def _unpack(x, n_sleepers, m, wheels, lmax):
-    size = n_sleepers * (2 * m + 1)
-    c = unpack_harmonics(x[:size], n_sleepers)
-    rest = x[size:]
-    forces = (rest[:wheels * lmax] + 1j * rest[wheels * lmax:2 * wheels * lmax]).reshape(
-        wheels, lmax)
-    return c, forces, rest[2 * wheels * lmax:]
+def _through(under, transfer, modes, factor, reads):
+    """sum_n under[l, n, k] transfer[n, r_l, s_q] factor[n, q, k'], block by block (r, s)."""
+    lmax, k_w = under.shape[0], under.shape[2]
+    out = np.zeros((lmax, k_w, factor.shape[1], factor.shape[2]), dtype=complex)
+    largest = float(np.max(np.abs(transfer))) if transfer.size else 0.0
+    for r in np.unique(reads):
+        rows = np.flatnonzero(reads == r)
+        for s in np.unique(modes):
+            line = transfer[:, r, s]
+            if not np.any(np.abs(line) > 1e-13 * largest):
+                continue                       # round-off: the blocks identical sleepers skip
+            cols = np.flatnonzero(modes == s)
+            block = line[:, None, None] * factor[:, cols, :]               # (W, q, K')
+            out[np.ix_(rows, np.arange(k_w), cols, np.arange(factor.shape[2]))] = \
+                np.tensordot(under[rows], block, axes=([1], [0]))
+    return out
+
+
+def _hertz_tangent(wheel, delta: np.ndarray, grid: np.ndarray) -> np.ndarray:
+    """d[C_H max(delta, 0)^{3/2}]_packed / d delta_packed per wheel, (K, 2l+1, 2l+1) [N/m].
+
+    With the tangent's harmonics k_n (two-sided, k_{-n} = conj k_n), harmonic
+    p of k delta is ``sum_q k_{p-q} delta_q``: for delta_q = a_q + i b_q it
+    takes ``k_{p-q} + k_{p+q}`` per a_q and ``i (k_{p-q} - k_{p+q})`` per b_q.
+    """
+    spectrum = np.fft.rfft(wheel.contact_stiffness(delta), axis=-1) / delta.shape[-1]
+    lmax = grid.size
+    step = int(grid[0]) if lmax else 1
+    index = np.arange(-2 * lmax, 2 * lmax + 1)
+    one_sided = spectrum[:, np.abs(index) * step]
+    k = np.where(index >= 0, one_sided, np.conj(one_sided))              # (K, 4l+1)
+    p = np.arange(1, lmax + 1)
+    minus = k[:, 2 * lmax + p[:, None] - p[None, :]]                      # k_{p-q}
+    plus = k[:, 2 * lmax + p[:, None] + p[None, :]]                       # k_{p+q}
+    by_a, by_b = minus + plus, 1j * (minus - plus)
+    at_p = k[:, 2 * lmax + p]
+    out = np.empty((delta.shape[0], 2 * lmax + 1, 2 * lmax + 1))
+    out[:, 0, 0] = k[:, 2 * lmax].real
+    out[:, 0, 1:lmax + 1] = 2 * at_p.real
+    out[:, 0, lmax + 1:] = 2 * at_p.imag
+    out[:, 1:lmax + 1, 0], out[:, lmax + 1:, 0] = at_p.real, at_p.imag
+    out[:, 1:lmax + 1, 1:lmax + 1], out[:, lmax + 1:, 1:lmax + 1] = by_a.real, by_a.imag
+    out[:, 1:lmax + 1, lmax + 1:], out[:, lmax + 1:, lmax + 1:] = by_b.real, by_b.imag
+    return out
+
+
+def _packed_harmonics(samples: np.ndarray, grid: np.ndarray) -> np.ndarray:
+    """(K, S) samples -> (K, 2l+1) ``[mean, Re x_p, Im x_p]`` at p = grid."""
+    spectrum = np.fft.rfft(samples, axis=-1) / samples.shape[-1]
+    return np.concatenate([spectrum[:, :1].real, spectrum[:, grid].real,
+                           spectrum[:, grid].imag], axis=1)
+
+
+def _pack(forces: np.ndarray, lift: np.ndarray) -> np.ndarray:
+    return np.concatenate([lift[:, None], forces.real, forces.imag], axis=1).ravel()
+
+
+def _unpack(x: np.ndarray, wheels: int, lmax: int):
+    rows = x.reshape(wheels, 2 * lmax + 1)
+    return rows[:, 1:lmax + 1] + 1j * rows[:, lmax + 1:], rows[:, 0].copy()
 
 
 def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
                  samples: int | None = None, tol: float = 1e-9,
-                 max_iterations: int = 30) -> WheelSolution:
+                 max_iterations: int = 40) -> WheelNewton:
     """Periodic response of a cell of sleepers under wheels on Hertz springs, by Newton.
 
     Parameters
@@ -80,60 +184,97 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
         r(x) [m], repeating with the cell.
     harmonics : int
         m, the sleepers'; the wheels' harmonics are the multiples of H / (N L) up to m.
+    tol : float
+        Converged once the contact residual over the largest Q and the
+        sleepers' residual over the train's load are both <= tol.
     """
     m = int(harmonics)
     samples = default_samples(m) if samples is None else int(samples)
     system = wheel_system(passage, cell, wheel, m, samples)
-    n_sl, k_w, lmax = cell.sleepers, len(passage.axle_positions), system.grid.size
-    start = solve_cell(passage, cell, m, samples=samples)
-    c0 = start.coefficients[:, m:]
-    x = _pack(c0, np.zeros((k_w, lmax), dtype=complex),
-              np.array([wheel.static_compression(q) for q in passage.axle_loads])
-              - float(np.mean(profile(np.linspace(0, float(passage.wagon_length), 4096,
-                                                  endpoint=False)))))
-    load_scale = two_sided_norm(system.ops.load)
-    force_scale = float(np.max(passage.axle_loads))
+    k_w, lmax = len(passage.axle_positions), system.grid.size
+    loads = np.asarray(passage.axle_loads, dtype=float)
+    scale = float(np.max(loads))
+    period = float(passage.period)
+    lift = np.array([wheel.static_compression(q) for q in loads]) - float(np.mean(
+        profile(np.linspace(0, float(passage.wagon_length), 4096, endpoint=False))))
+    x = _pack(np.zeros((k_w, lmax), dtype=complex), lift)
+    sleepers = None
 
-    def residual(vector):
-        c, forces, lift = _unpack(vector, n_sl, m, k_w, lmax)
-        sleepers, contacts, delta, hertz = wheel_residual(
-            passage, cell, wheel, profile, system, c, forces, lift)
-        packed = np.concatenate([pack_harmonics(sleepers) / load_scale,
-                                 contacts[:, 0].real / force_scale,
-                                 contacts[:, 1:].real.ravel() / force_scale,
-                                 contacts[:, 1:].imag.ravel() / force_scale])
-        return packed, delta, hertz
+    def evaluate(vector, start):
+        forces, y = _unpack(vector, k_w, lmax)
+        inner = solve_cell(passage, cell, m, samples=samples,
+                           extra_load=wheel_loads(system, forces),
+                           initial=start)
+        c = inner.coefficients[:, m:]
+        _, contacts, delta, hertz = wheel_residual(passage, cell, wheel, profile, system,
+                                                   c, forces, y)
+        packed = np.concatenate([contacts[:, :1].real, contacts[:, 1:].real,
+                                 contacts[:, 1:].imag], axis=1).ravel() / scale
+        return packed, delta, hertz, inner
 
-    current, delta, hertz = residual(x)
+    current, delta, hertz, sleepers = evaluate(x, None)
     norm, steps, message = float(np.linalg.norm(current)), 0, ""
-    # difference steps by kind of unknown: a share of the largest sleeper
-    # coefficient, 1 mN of contact force, 1e-13 m of compression
-    size = n_sl * (2 * m + 1)
-    steps_by_kind = np.concatenate([np.full(size, 1e-8 * float(np.abs(x[:size]).max())),
-                                    np.full(2 * k_w * lmax, 1e-3), np.full(k_w, 1e-13)])
-    while norm > tol and steps < max_iterations:
+    cached = None
+
+    def forces_of(vector):
+        return _unpack(vector, k_w, lmax)[0]
+
+    while (norm > tol or not sleepers.converged) and steps < max_iterations:
         steps += 1
-        h = steps_by_kind
-        jacobian = np.empty((current.size, x.size))
-        for i in range(x.size):
-            trial = x.copy()
-            trial[i] += h[i]
-            jacobian[:, i] = (residual(trial)[0] - current) / h[i]
-        step = np.linalg.lstsq(jacobian, -current, rcond=None)[0]
+        c = sleepers.coefficients[:, m:]
+        tangents, _ = tangent_spectrum(cell, c, system.ops, samples)
+        mean = tangents[:, :, 2 * m]                                       # (2, N)
+        s = 1j * system.ops.omega[:, None]
+        support = (cell.sleeper_mass * s**2 + mean[0].real + s * mean[1].real)
+        if cached is None or not np.array_equal(cached[0], support):
+            cached = (support, track_under_wheels(system, cell, support))
+        receptance = cached[1]
+        # the first step solves the contact linearised at the static compression,
+        # k_H (delta - delta_0) = P: from the constant forces the wheel does not
+        # yet follow the profile, and Hertz's tangent there would be zero in a dip
+        linear_start = steps == 1
+        if linear_start:
+            static = np.array([wheel.static_compression(q) for q in loads])
+            hertz_tangent = _hertz_tangent(wheel, np.broadcast_to(static[:, None], delta.shape),
+                                           system.grid)
+        else:
+            hertz_tangent = _hertz_tangent(wheel, delta, system.grid)
+        size = 2 * lmax + 1
+        jacobian = np.zeros((k_w * size, k_w * size))
+        for k in range(k_w):
+            rows = slice(k * size, (k + 1) * size)
+            jacobian[rows] = hertz_tangent[k] @ receptance[rows]
+            own = slice(k * size + 1, (k + 1) * size)
+            jacobian[own, own] -= np.eye(2 * lmax)
+        target = current
+        if linear_start:
+            stiffness = hertz_tangent[:, 0, 0]
+            linear = stiffness[:, None] * (delta - static[:, None])
+            target = (np.concatenate([_packed_harmonics(linear, system.grid) - np.concatenate(
+                [loads[:, None] * 0.0, forces_of(x).real, forces_of(x).imag], axis=1)],
+                axis=1).ravel() / scale)
+        step = np.linalg.solve(jacobian / scale, -target)
         for _ in range(30):
-            new, new_delta, new_hertz = residual(x + step)
-            new_norm = float(np.linalg.norm(new))
-            if new_norm < norm:
+            trial = evaluate(x + step, c)
+            trial_norm = float(np.linalg.norm(trial[0]))
+            if trial_norm < norm or linear_start:
                 break
             step = 0.5 * step
         else:
-            message = f"no decrease of the residual at Newton step {steps}"
+            message = f"no decrease of the contact residual at Newton step {steps}"
             break
-        x, current, delta, hertz, norm = x + step, new, new_delta, new_hertz, new_norm
-    converged = bool(norm <= tol)
-    c, forces, lift = _unpack(x, n_sl, m, k_w, lmax)
-    times = np.arange(samples) * float(passage.period) / samples
-    summary = f"residual {norm:.2e} {'<=' if converged else '>'} tol {tol:.1e} after {steps} steps"
-    two_sided = np.concatenate([np.conj(c[:, :0:-1]), c], axis=1)
-    return WheelSolution(two_sided, system.grid, forces, lift, times, delta, hertz, converged, norm,
-                         steps, summary if not message else f"{message}; {summary}", current)
+        x = x + step
+        current, delta, hertz, sleepers = trial
+        norm = trial_norm
+    converged = bool(norm <= tol and sleepers.converged)
+    forces, y = _unpack(x, k_w, lmax)
+    times = np.arange(samples) * period / samples
+    summary = (f"contact residual {norm:.2e} {'<=' if norm <= tol else '>'} tol {tol:.1e} "
+               f"after {steps} steps; sleepers: {sleepers.message}")
+    # delta's own harmonics, without the profile and the lift: rail under the wheel - z
+    moving = delta - compression(passage, profile, system, np.zeros_like(forces), y)
+    harmonics = (np.fft.rfft(moving, axis=-1) / samples)[:, system.grid]
+    return WheelNewton(sleepers.coefficients, system.grid, forces, y, harmonics, times, delta,
+                       hertz, converged, norm, steps,
+                       summary if not message else f"{message}; {summary}", sleepers)
+

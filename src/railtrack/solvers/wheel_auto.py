@@ -1,0 +1,131 @@
+"""`railtrack.solve` with wheels: the cell, the checks, and ``harmonics="auto"`` (issue 20).
+
+A steady state exists when every wheel meets the same track every wagon
+length H: the rail-top profile must repeat with the cell of sleepers (N L),
+and the cell must divide H.  A foundation law (identical sleepers) takes
+the smallest such cell: N = 1 for the smooth rail (the wheels feel the
+sleepers pass, harmonics p = H/L, 2H/L, ..), N = period / L for a profile
+with a `period` (a dipped weld once a wagon: N = H/L, every harmonic).
+
+"auto" solves at m, then 1.5 m, .. until two successive contact-force
+histories differ by at most ``accuracy`` times the largest static wheel
+load, and returns the finer one with that difference as
+``truncation_error``.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import replace
+
+import numpy as np
+
+from ..model.cell import SleeperCell
+from ..model.passage import Passage
+from ..model.profile import smooth_rail
+from .auto_harmonics import DEFAULT_ACCURACY
+from .solution import ConvergenceError, ConvergenceWarning, TruncationWarning
+from .wheel_newton import solve_wheels
+from .wheel_solution import WheelSolution
+
+__all__ = ["solve_track_wheels", "wheel_cell"]
+
+MAX_HARMONICS = 1200
+
+
+def wheel_cell(passage: Passage, support, profile) -> SleeperCell:
+    """The cell a law and a profile need, or ``support`` itself if it is a `SleeperCell`.
+
+    Raises
+    ------
+    ValueError
+        A profile that does not repeat with the cell, or a cell that H does
+        not hold a whole number of times.
+    """
+    span, wagon = float(passage.sleeper_spacing), float(passage.wagon_length)
+    if isinstance(support, SleeperCell):
+        cell = support
+    else:
+        period = getattr(profile, "period", None)
+        sleepers = 1 if period is None else int(round(float(period) / span))
+        if period is not None and (sleepers < 1 or abs(sleepers * span - period) > 1e-9 * wagon):
+            raise ValueError(f"the profile's period ({period} m) must be a whole number of "
+                             f"sleeper spacings (L = {span} m) for a steady state")
+        cell = SleeperCell.identical(passage, support, sleepers)
+    length = cell.sleepers * span
+    if abs(wagon / length - round(wagon / length)) > 1e-9:
+        raise ValueError(f"the wagon length H = {wagon} m must be a whole number of cells "
+                         f"(N L = {length} m) for a steady state with wheels")
+    x = np.linspace(0.0, wagon, 2048, endpoint=False)
+    here, there = np.asarray(profile(x), float), np.asarray(profile(x + length), float)
+    if not np.all(np.isfinite(here)):
+        raise ValueError("the profile r(x) is not finite along the wagon length")
+    size = max(float(np.max(np.abs(here))), 1e-12)
+    if np.max(np.abs(there - here)) > 1e-9 * size:
+        raise ValueError(f"the profile must repeat every N L = {length} m (the cell), so that "
+                         "every wagon meets the same rail; give the profile a `period` that "
+                         "divides H, or pass a SleeperCell of that length")
+    return cell
+
+
+def solve_track_wheels(track, train, support, wheel, profile=smooth_rail,
+                       harmonics="auto", *, accuracy: float | None = None,
+                       tol: float = 1e-9, strict: bool = False) -> WheelSolution:
+    """`railtrack.solve` with ``wheel=``: see `railtrack.solve` and the module docstring."""
+    if wheel.primary_stiffness or wheel.primary_damping:
+        raise ValueError("the harmonic balance takes an infinitely soft primary suspension "
+                         "(the wheel carries its static load Q whatever it does); a primary "
+                         "suspension is modelled by the time-domain ring, "
+                         "railtrack.simulate_time_domain(..., wheel=...)")
+    passage = Passage(track, train)
+    profile = smooth_rail if profile is None else profile
+    cell = wheel_cell(passage, support, profile)
+    groups = int(round(float(passage.wagon_length) / (cell.sleepers * passage.sleeper_spacing)))
+    scale = float(np.max(passage.axle_loads))
+    if isinstance(harmonics, str):
+        if harmonics != "auto":
+            raise ValueError(f'harmonics must be an integer >= 1 or "auto"; got {harmonics!r}')
+        accuracy = DEFAULT_ACCURACY if accuracy is None else float(accuracy)
+        result = _auto(passage, cell, wheel, profile, groups, accuracy, tol, scale)
+        limit = accuracy
+    else:
+        if isinstance(harmonics, bool) or int(harmonics) != harmonics or harmonics < groups:
+            raise ValueError(f"harmonics must be an integer >= H/(N L) = {groups} (the first "
+                             f"harmonic the wheels feel); got {harmonics!r}")
+        result = _wrap(passage, wheel, profile, solve_wheels(passage, cell, wheel, profile,
+                                                             int(harmonics), tol=tol))
+        limit = np.inf
+    if not result.converged:
+        if strict:
+            raise ConvergenceError(result.message, result, [])
+        warnings.warn(result.message, ConvergenceWarning, stacklevel=3)
+    elif result.truncation_error > limit:
+        warnings.warn(f"harmonics={result.harmonics}: the contact force changed by "
+                      f"{result.truncation_error:.1%} of Q at the last refinement",
+                      TruncationWarning, stacklevel=3)
+    return result
+
+
+def _wrap(passage, wheel, profile, raw) -> WheelSolution:
+    return WheelSolution(passage, wheel, profile, raw.sleepers.harmonics, raw.grid,
+                         raw.contact_harmonics, raw.compression_harmonics, raw.lift,
+                         raw.sleepers, raw.converged, raw.residual, raw.iterations, raw.message)
+
+
+def _auto(passage, cell, wheel, profile, groups, accuracy, tol, scale) -> WheelSolution:
+    m = max(4 * groups, 60)
+    t = np.linspace(0.0, float(passage.period), 4096, endpoint=False)
+    previous, change = None, float("nan")
+    while True:
+        result = _wrap(passage, wheel, profile, solve_wheels(passage, cell, wheel, profile, m,
+                                                             tol=tol))
+        if not result.converged:
+            return replace(result, truncation_error=change)
+        force = result.contact_force(t)
+        if previous is not None:
+            change = float(np.max(np.abs(force - previous))) / scale
+            if change <= accuracy:
+                return replace(result, truncation_error=change)
+        if m >= MAX_HARMONICS:
+            return replace(result, truncation_error=change)
+        previous, m = force, min(int(np.ceil(1.5 * m / groups)) * groups, MAX_HARMONICS)

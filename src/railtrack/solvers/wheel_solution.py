@@ -1,0 +1,157 @@
+"""The periodic response with wheels on Hertz springs, and what it tells an engineer.
+
+Per wheel k of a wagon (first axis, the train's axles in order): the
+contact force P_k(t) [N], positive in compression, the compression
+delta_k(t) [m], the wheel's displacement z_k(t) [m], positive upward; and,
+through `sleepers` (a `railtrack.CellSolution` loaded by the wheels' actual
+forces), every sleeper's displacement, rail-seat load and foundation force.
+t = 0 has axle 1 above sleeper 0, as in `railtrack.Solution`; wheel k is at
+x = vt - d_k along the track.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from ..model.passage import Passage
+from .cell_solution import CellSolution
+
+__all__ = ["WheelSolution"]
+
+
+@dataclass(frozen=True)
+class WheelSolution:
+    """Wheels, rail and sleepers in the steady state; ``converged`` only if the residual <= tol.
+
+    Attributes
+    ----------
+    passage : Passage
+    wheel : Wheel
+    profile : callable
+        r(x) [m], the rail-top profile.
+    harmonics : int
+        m, of the sleepers' fundamental 2 pi v / H.
+    grid : ndarray
+        The wheels' harmonics p (multiples of H / (N L)).
+    contact_harmonics, compression_harmonics : ndarray, shape (K, lmax)
+        P_{k,p} [N] and the harmonics of delta_k without the profile [m].
+    lift : ndarray, shape (K,)
+        Mean of delta_k minus the profile's mean [m].
+    sleepers : CellSolution
+    converged : bool
+    residual : float
+        Contact residual over the largest static wheel load.
+    iterations : int
+    message : str
+    truncation_error : float
+        Estimated error of the contact force from keeping m harmonics, over
+        the largest static wheel load [-]; NaN if not estimated.
+    """
+
+    passage: Passage
+    wheel: Any
+    profile: Any
+    harmonics: int
+    grid: np.ndarray
+    contact_harmonics: np.ndarray
+    compression_harmonics: np.ndarray
+    lift: np.ndarray
+    sleepers: CellSolution
+    converged: bool
+    residual: float
+    iterations: int
+    message: str
+    truncation_error: float = float("nan")
+
+    @property
+    def period(self) -> float:
+        """T = H / v [s], one wagon passing."""
+        return float(self.passage.period)
+
+    def _series(self, harmonics: np.ndarray, t: ArrayLike) -> np.ndarray:
+        t = np.asarray(t, dtype=float)
+        omega = 2 * np.pi * self.grid / self.period
+        phases = np.exp(1j * np.multiply.outer(t, omega))                   # (..., lmax)
+        return 2 * np.einsum("kl,...l->k...", harmonics, phases).real
+
+    def _positions(self, t: ArrayLike) -> np.ndarray:
+        t = np.asarray(t, dtype=float)
+        d = np.asarray(self.passage.axle_positions, dtype=float)
+        return float(self.passage.speed) * t[None] - d.reshape((-1,) + (1,) * t.ndim)
+
+    def compression(self, t: ArrayLike) -> np.ndarray:
+        """delta_k(t) [m], shape (K,) + t.shape; the wheel is off the rail where < 0."""
+        lift = self.lift.reshape((-1,) + (1,) * np.ndim(t))
+        return (self._series(self.compression_harmonics, t) + lift
+                + np.asarray(self.profile(self._positions(t))))
+
+    def contact_force(self, t: ArrayLike) -> np.ndarray:
+        """P_k(t) = C_H max(delta_k, 0)^{3/2} [N], shape (K,) + t.shape."""
+        return self.wheel.contact_force(self.compression(t))
+
+    def wheel_displacement(self, t: ArrayLike) -> np.ndarray:
+        """z_k(t) [m], positive upward, from the undeformed track; shape (K,) + t.shape.
+
+        Its harmonics are ``-P_p / (m_w omega_p^2)``; its mean is the rail's
+        mean under the wheel minus the mean compression.
+        """
+        omega = 2 * np.pi * self.grid / self.period
+        fluctuation = self._series(-self.contact_harmonics / (self.wheel.unsprung_mass
+                                                              * omega**2), t)
+        return fluctuation + self._mean_height().reshape((-1,) + (1,) * np.ndim(t))
+
+    def _mean_height(self) -> np.ndarray:
+        # the mean of the rail under a moving wheel takes only its mean force,
+        # the static load, and the sleepers' reactions: the rail field of
+        # `sleepers`, read along the wheel's path
+        samples = 1024
+        t = np.arange(samples) * self.period / samples
+        under = self.sleepers.rail_displacement(np.broadcast_to(t, (len(self.lift), samples)),
+                                                self._positions(t))
+        return under.mean(axis=-1) - self.lift
+
+    def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
+        """Each sleeper's rail-seat load [N], (N,) + t.shape, positive in compression."""
+        return self.sleepers.rail_seat_load(t)
+
+    def sleeper_displacement(self, t: ArrayLike) -> np.ndarray:
+        """Each sleeper's w_j(t) [m], (N,) + t.shape, positive upward."""
+        return self.sleepers.sleeper_displacement(t)
+
+    def one_period(self, samples: int = 2048) -> np.ndarray:
+        """Times over [0, T) [s], ``samples`` of them."""
+        return np.linspace(0.0, self.period, int(samples), endpoint=False)
+
+    def extremes(self, samples: int = 4096) -> dict[str, np.ndarray]:
+        """Per wheel: largest and smallest P [N], where they occur [m], mean P [N].
+
+        Positions are the wheel's distance from sleeper 0 along the track,
+        within one wagon length (0 <= x < H); ``dynamic_factor`` is max P / Q.
+        """
+        t = self.one_period(samples)
+        force = self.contact_force(t)
+        where = np.mod(self._positions(t), float(self.passage.wagon_length))
+        rows = np.arange(force.shape[0])
+        top, bottom = force.argmax(axis=1), force.argmin(axis=1)
+        return {"max": force[rows, top], "where_max": where[rows, top],
+                "min": force[rows, bottom], "where_min": where[rows, bottom],
+                "mean": force.mean(axis=1),
+                "dynamic_factor": force[rows, top] / np.asarray(self.passage.axle_loads)}
+
+    def loss_of_contact(self, samples: int = 8192) -> tuple[np.ndarray, np.ndarray]:
+        """Per wheel: the share of the period off the rail, and the longest spell off it [s]."""
+        off = self.compression(self.one_period(samples)) <= 0.0
+        dt = self.period / samples
+        longest = np.zeros(off.shape[0])
+        for k, row in enumerate(off):
+            if row.all():
+                longest[k] = self.period
+                continue
+            rolled = np.roll(row, -int(np.argmin(row)))        # start on the rail
+            runs = np.diff(np.flatnonzero(np.diff(np.r_[0, rolled.astype(int), 0])))[::2]
+            longest[k] = runs.max() * dt if runs.size else 0.0
+        return off.mean(axis=1), longest
