@@ -9,6 +9,10 @@ Independent truths used here:
   formula) in the limit Phi -> 0, rho I = 0;
 * the cantilever's closed-form tip deflection P l^3/(3 EI) + P l/kGA and
   rotation P l^2/(2 EI), and the deflection under a load inside the span;
+* the clamped element's deflection under its own point force, by condensing
+  a node there (and mid-element h^3/(192 EI) + h/(4 kGA)), and the ring's
+  compliance under a wheel inside an element against a refined ring with the
+  wheel on a node;
 * the simply supported span's first frequency (the pinned-pinned frequency,
   `pinned_pinned_frequency`, checked in tests/test_timoshenko.py against the
   coupled equations' determinant) against the ring pinned at its sleepers;
@@ -19,6 +23,7 @@ Independent truths used here:
 import numpy as np
 import pytest
 import scipy.linalg as sl
+import scipy.sparse as sp
 
 from railtrack import LinearFoundation, Track, Train
 from railtrack.equations.timoshenko_receptance import pinned_pinned_frequency
@@ -26,16 +31,19 @@ from railtrack.model.passage import Passage
 from railtrack.model.profile import CosineDip
 from railtrack.model.timoshenko import TimoshenkoRail
 from railtrack.model.wheel import Wheel
-from railtrack.timedomain.fem import rail_shapes, ring_mesh
+from railtrack.timedomain.fem import contact_compliance, contact_shapes, rail_shapes, ring_mesh
 from railtrack.timedomain.rail_elements import (
     beam_element_matrices,
     hermite_shape_functions,
     shear_parameter,
     timoshenko_curvature_weights,
     timoshenko_element_matrices,
+    timoshenko_point_compliance,
     timoshenko_rotation_shapes,
     timoshenko_shape_functions,
 )
+from railtrack.timedomain import ring_wheels
+from railtrack.timedomain.newmark import CondensedSystem
 from railtrack.timedomain.ring_fields import moment_operators
 from railtrack.timedomain.simulation import simulate_time_domain
 
@@ -206,18 +214,28 @@ OUTPUTS = ("contact_forces", "wheel_displacements", "sleeper_displacements", "ra
            "bending_moment_above_sleeper", "bending_moment_midspan", "rail_displacement_midspan")
 
 
-def test_ring_without_timoshenko_is_unchanged_and_stiff_shear_is_its_limit():
+def test_ring_without_timoshenko_is_unchanged_and_stiff_shear_is_its_limit(monkeypatch):
+    """kGA -> inf, rho I = 0 gives the EB ring: with constant moving forces, and with wheels once
+    the contact's local compliance (whose EB limit h^3 eta^3/(3 EI) the EB ring leaves out,
+    `contact_compliance`) is switched off."""
     plain = simulate_time_domain(Track.paper(), Train.paper(speed=45.0),
                                  LinearFoundation(20e6, 0.2e6), 3, 900, wheel=Wheel(600.0),
                                  profile=CosineDip(0.5e-3, 1.0, 18.0, centre=9.3), tol=1e-4,
                                  min_periods=4, max_periods=4, warn_step_error=None)
-    default, stiff = run(), run(TimoshenkoRail(1e16, 0.0))     # Phi = 7.6e-8
+    stiff_rail = TimoshenkoRail(1e16, 0.0)                   # Phi = 1.9e-8 at h = 0.2 m
+    constant = [simulate_time_domain(Track.paper(), Train.paper(), LinearFoundation.paper(), 3,
+                                     480, timoshenko=rail) for rail in (None, stiff_rail)]
+    default = run()
+    monkeypatch.setattr(ring_wheels, "contact_compliance", lambda mesh, times: None)
+    stiff = run(stiff_rail)
     assert plain.periods == stiff.periods == 4
     for name in OUTPUTS:
         np.testing.assert_array_equal(getattr(default, name), getattr(plain, name))
-        reference = getattr(plain, name)
-        np.testing.assert_allclose(getattr(stiff, name), reference, rtol=0,
-                                   atol=1e-5 * np.abs(reference).max())
+        for reference, result in ((plain, stiff), constant):
+            reference, result = getattr(reference, name), getattr(result, name)
+            if reference is not None:
+                np.testing.assert_allclose(result, reference, rtol=0,
+                                           atol=1e-6 * np.abs(reference).max())
 
 
 def test_timoshenko_ring_carries_the_wheels():
@@ -228,8 +246,9 @@ def test_timoshenko_ring_carries_the_wheels():
     # sleeper 0's moment (ring_outputs) is the first of every sleeper's (ring_fields)
     for one, every in (("bending_moment_above_sleeper", "bending_moments_above_sleepers"),
                        ("bending_moment_midspan", "bending_moments_midspan")):
-        np.testing.assert_allclose(getattr(timoshenko, one), getattr(timoshenko, every)[:, 0],
-                                   rtol=1e-12)
+        reference = getattr(timoshenko, every)[:, 0]
+        np.testing.assert_allclose(getattr(timoshenko, one), reference, rtol=0,
+                                   atol=1e-12 * np.abs(reference).max())
     # the shear-softened rail sags more under the wheels than the EB rail
     assert timoshenko.rail_under_wheels.min() < euler.rail_under_wheels.min()
 
@@ -258,3 +277,64 @@ def test_ring_force_inside_an_element_loads_the_nodes_exactly(rail):
         states.append((u[0:2 * mesh.n_nodes:2 * (elements // 2)], u[mesh.sleeper_dofs], (above @ u)[1:]))
     for coarse, fine in zip(*states):
         np.testing.assert_allclose(coarse, fine, rtol=0, atol=1e-10 * np.abs(fine).max())
+
+
+@pytest.mark.parametrize("rail, h", [(UIC60, 0.075), (TimoshenkoRail(5e7, 2.0), 0.3)])
+def test_point_compliance_is_the_clamped_element_condensed_at_the_force(rail, h):
+    """g(xi) against two elements of lengths xi h and (1 - xi) h from the test's own energies,
+    clamped at both ends; mid-element, the clamped beam's h^3/(192 EI) + h/(4 kGA)."""
+    kga = rail.shear_stiffness
+    phi = shear_parameter(EI, kga, h)
+    for xi in (0.1, 1.0 / 3.0, 0.5, 0.8):
+        left, _ = energy_matrices(EI, RHO_S, kga, 0.0, xi * h)
+        right, _ = energy_matrices(EI, RHO_S, kga, 0.0, (1.0 - xi) * h)
+        middle = np.linalg.inv(left[2:, 2:] + right[:2, :2])[0, 0]
+        assert timoshenko_point_compliance(xi, h, EI, phi) == pytest.approx(middle, rel=1e-9)
+    assert timoshenko_point_compliance(0.5, h, EI, phi) == pytest.approx(
+        h**3 / (192 * EI) + h / (4 * kga), rel=1e-12)
+    assert timoshenko_point_compliance([0.0, 1.0], h, EI, phi) == pytest.approx([0.0, 0.0])
+    eta = 0.3 * 0.7
+    assert timoshenko_point_compliance(0.3, h, EI, 0.0) == pytest.approx(h**3 * eta**3 / (3 * EI))
+
+
+def test_wheel_compliance_inside_an_element_is_the_refined_ring_at_a_node():
+    """N K^-1 N^T + g at x = 0.1 m on 0.3 m Timoshenko elements (the wheel's static compliance in
+    the ring with wheels) equals K^-1 at the node x = 0.1 m of 0.1 m elements."""
+    passage = Passage.paper()
+    time = 0.1 / float(passage.speed)                  # the first axle at x = 0.1 m
+    compliances = []
+    for elements in (2, 6):
+        mesh = ring_mesh(passage, elements, timoshenko=UIC60)
+        stiffness = mesh.stiffness.toarray()
+        stiffness[mesh.sleeper_dofs, mesh.sleeper_dofs] += 20e6
+        dofs, shapes = contact_shapes(mesh, [time])
+        local = contact_compliance(mesh, [time])
+        vector = np.zeros(mesh.n_dofs)
+        vector[dofs[0, 0]] = shapes[0, 0]
+        compliances.append(vector @ np.linalg.solve(stiffness, vector) + local[0, 0])
+    assert compliances[0] == pytest.approx(compliances[1], rel=1e-10)
+    assert contact_compliance(ring_mesh(passage, 2), [time]) is None       # EB: unchanged
+
+
+def test_wheels_static_contact_inside_an_element_matches_the_refined_ring():
+    """`solve_contacts` (the wheels' Newton) with the wheels at x = 0.1 m and 3.1 m inside
+    0.3 m Timoshenko elements: the rail under each wheel u_c and the contact force P equal a
+    ring of 0.1 m elements, where the wheels stand on nodes (g = 0 there)."""
+    passage = Passage.paper()
+    time, wheel, spring = 0.1 / float(passage.speed), Wheel(600.0, 9.4e10, 1e6), 1e6
+    loads = np.asarray(passage.axle_loads, dtype=float)
+    results = []
+    for elements in (2, 6):
+        mesh = ring_mesh(passage, elements, timoshenko=UIC60)
+        foundation = sp.coo_matrix((np.full(mesh.n_sleepers, 20e6),
+                                    (mesh.sleeper_dofs, mesh.sleeper_dofs)), mesh.stiffness.shape)
+        system = CondensedSystem((mesh.stiffness + foundation).tocsc(), mesh.sleeper_dofs)
+        dofs, shapes = contact_shapes(mesh, [time])
+        zero = np.zeros(mesh.n_sleepers)
+        _, _, force, under = ring_wheels.solve_contacts(
+            system, np.zeros(mesh.n_dofs), (dofs[0], shapes[0]), wheel, loads / spring, spring,
+            lambda w: (zero, zero), (zero, loads), 1e-15, 50, contact_compliance(mesh, [time])[0])
+        results.append((force, under))
+    assert np.all(contact_compliance(ring_mesh(passage, 2, timoshenko=UIC60), [time]) > 0)
+    for coarse, fine in zip(*results):
+        np.testing.assert_allclose(coarse, fine, rtol=1e-9)

@@ -35,7 +35,8 @@ from numpy.typing import ArrayLike
 from ..model.passage import Passage
 from ..model.timoshenko import TimoshenkoRail
 from .rail_elements import (beam_element_matrices, hermite_shape_functions, shear_parameter,
-                            timoshenko_element_matrices, timoshenko_shape_functions)
+                            timoshenko_element_matrices, timoshenko_point_compliance,
+                            timoshenko_shape_functions)
 
 __all__ = [
     "RingMesh",
@@ -46,6 +47,7 @@ __all__ = [
     "wheel_positions",
     "wheel_load_entries",
     "contact_shapes",
+    "contact_compliance",
     "rail_shapes",
 ]
 
@@ -242,7 +244,7 @@ def wheel_load_entries(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np
     """Consistent nodal loads of the wheels at each time, as sparse entries.
 
     Wheel j pushes down with -Q_j; its work-equivalent nodal loads are -Q_j
-    times the Hermite shape functions at its position in its element.
+    times the shape functions (`rail_shapes`) at its position in its element.
 
     Parameters
     ----------
@@ -271,13 +273,31 @@ def contact_shapes(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np.nda
     Shared by `wheel_load_entries` and `railtrack.timedomain.ring_wheels`, so a
     wheel carrying exactly Q loads the rail as the constant force does.
     """
-    x = wheel_positions(mesh.passage, times)
-    h = mesh.element_length
-    element = np.minimum(np.floor(x / h).astype(int), mesh.n_nodes - 1)
-    xi = np.clip(x / h - element, 0.0, 1.0)
+    element, xi = _contact_points(mesh, times)
     following = (element + 1) % mesh.n_nodes
     dofs = np.stack([2 * element, 2 * element + 1, 2 * following, 2 * following + 1], axis=-1)
     return dofs, rail_shapes(mesh, xi)
+
+
+def _contact_points(mesh: RingMesh, times: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """The element under each wheel and the wheel's xi in it, shapes (n_t, J)."""
+    x = wheel_positions(mesh.passage, times)
+    h = mesh.element_length
+    element = np.minimum(np.floor(x / h).astype(int), mesh.n_nodes - 1)
+    return element, np.clip(x / h - element, 0.0, 1.0)
+
+
+def contact_compliance(mesh: RingMesh, times: ArrayLike) -> np.ndarray | None:
+    """g(xi) [m/N], shape (n_t, J): a Timoshenko rail's sag under a unit wheel force inside its
+    element beyond the element's interpolation (`rail_elements.timoshenko_point_compliance`).
+
+    None for Hermite elements, whose h^3 xi^3 (1 - xi)^3 / (3 EI) is left out.
+    """
+    if mesh.timoshenko is None:
+        return None
+    _, xi = _contact_points(mesh, times)
+    return timoshenko_point_compliance(xi, mesh.element_length,
+                                       mesh.passage.rail_bending_stiffness, mesh.shear_parameter)
 
 
 def rail_shapes(mesh: RingMesh, xi: ArrayLike) -> np.ndarray:

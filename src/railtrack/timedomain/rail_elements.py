@@ -57,6 +57,7 @@ __all__ = [
     "timoshenko_shape_functions",
     "timoshenko_rotation_shapes",
     "timoshenko_curvature_weights",
+    "timoshenko_point_compliance",
 ]
 
 
@@ -247,3 +248,37 @@ def timoshenko_curvature_weights(xi: float, length: float, phi: float) -> np.nda
     h = float(length)
     return np.array([6.0 * (2.0 * xi - 1.0) / h**2, (6.0 * xi - 4.0 - phi) / h,
                      -6.0 * (2.0 * xi - 1.0) / h**2, (6.0 * xi - 2.0 + phi) / h]) / (1.0 + phi)
+
+
+def timoshenko_point_compliance(xi: ArrayLike, length: float, bending_stiffness: float,
+                                phi: float) -> np.ndarray:
+    """g(xi): deflection [m/N] at a unit force at xi inside an element clamped at both ends.
+
+    With eta = xi (1 - xi),
+
+        g = h^3 eta (4 eta^2 + Phi (1 + eta) + Phi^2) / (12 EI (1 + Phi)),        (T6)
+
+    the static condensation of a node at the force (two elements of lengths
+    xi h and (1 - xi) h, exact statically): the part of the beam's static
+    deflection under a force inside an element that the interpolation (T2)
+    of the nodal values misses.  It vanishes at the nodes; Phi = 0 gives the
+    Euler–Bernoulli h^3 eta^3 / (3 EI), and at mid-element
+    g = h^3 / (192 EI) + h / (4 kappa G A), the clamped beam's central
+    deflection.  For a wheel on a shear-flexible rail the shear part is what
+    matters: with Q = 75 kN at h = 7.5 cm on UIC60, 5.7 um.
+
+    Parameters
+    ----------
+    xi : array_like
+        Position of the force in the element over its length [-], in [0, 1].
+    length : float
+        h [m].
+    bending_stiffness : float
+        EI [N m^2].
+    phi : float
+        Phi of eq. (T1) [-].
+    """
+    eta = np.asarray(xi, dtype=float) * (1.0 - np.asarray(xi, dtype=float))
+    h = float(length)
+    return (h**3 * eta * (4.0 * eta * eta + phi * (1.0 + eta) + phi * phi)
+            / (12.0 * float(bending_stiffness) * (1.0 + phi)))
