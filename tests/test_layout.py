@@ -30,7 +30,7 @@ PUBLIC = {
     "NonFiniteLawError", "estimate_step_error", "explore", "dissipation", "Dissipation",
     "load_work", "floquet", "Floquet", "StabilityChange", "UnstableSolutionWarning",
     "ring_multipliers", "RingMultipliers", "SleeperCell", "GapFoundation", "CellSolution",
-    "random_support", "RandomSupport",
+    "random_support", "RandomSupport", "Wheel", "CosineDip", "WheelSolution",
 }
 
 

@@ -62,6 +62,9 @@ from .model.cell import SleeperCell
 from .model.gap import GapFoundation
 from .solvers.cell_solution import CellSolution
 from .studies.random_support import RandomSupport, random_support
+from .model.wheel import Wheel
+from .model.profile import CosineDip
+from .solvers.wheel_solution import WheelSolution
 from .model.track import Track
 from .model.train import Train
 
@@ -92,6 +95,9 @@ __all__ = [
     "CellSolution",
     "random_support",
     "RandomSupport",
+    "Wheel",
+    "CosineDip",
+    "WheelSolution",
     "as_foundation",
     "solve",
     "METHODS",

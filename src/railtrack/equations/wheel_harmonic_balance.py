@@ -42,7 +42,7 @@ from .receptance import bending_wavenumber
 from .wheel_train_receptance import wheel_train_receptance
 
 __all__ = ["WheelSystem", "wheel_system", "wheel_residual", "wheel_loads", "rail_under_wheels",
-           "compression", "contact_gap"]
+           "compression", "profile_harmonics", "contact_gap"]
 
 
 def contact_gap(a: np.ndarray, q: np.ndarray) -> np.ndarray:
@@ -194,13 +194,30 @@ def wheel_loads(system: WheelSystem, forces: np.ndarray) -> np.ndarray:
     return np.einsum("njs,ns->nj", system.mode_basis, by_mode)
 
 
+def profile_harmonics(passage: Passage, profile, grid: np.ndarray, samples: int) -> np.ndarray:
+    """r(vt - d_k)'s mean and harmonics p = grid, (K, lmax+1) [m]: the profile the wheels feel.
+
+    The harmonic balance keeps the profile's harmonics up to m, as it keeps
+    the wheels' and sleepers': a wheel without mass then follows it exactly
+    and presses with Q, at any m.  Sampled 4 ``samples`` times a period.
+    """
+    fine = 4 * int(samples)
+    t = np.arange(fine) * float(passage.period) / fine
+    positions = np.asarray(passage.axle_positions, dtype=float)
+    r = np.asarray(profile(float(passage.speed) * t[None, :] - positions[:, None]), dtype=float)
+    spectrum = np.fft.rfft(r, axis=-1) / fine
+    return np.concatenate([spectrum[:, :1], spectrum[:, grid]], axis=1)
+
+
 def compression(passage: Passage, profile, system: WheelSystem, fluctuation: np.ndarray,
                 lift: np.ndarray) -> np.ndarray:
-    """delta_k(t) [m] on the AFT samples from its harmonics p = grid (K, lmax) and y_k."""
+    """delta_k(t) [m] on the AFT samples from its harmonics p = grid (K, lmax) and y_k.
+
+    The profile enters through its harmonics up to m (`profile_harmonics`).
+    """
     samples = system.samples
+    rail_top = profile_harmonics(passage, profile, system.grid, samples)
     spectrum = np.zeros((fluctuation.shape[0], samples // 2 + 1), dtype=complex)
-    spectrum[:, system.grid] = fluctuation * samples
-    t = np.arange(samples) * float(passage.period) / samples
-    positions = np.asarray(passage.axle_positions, dtype=float)
+    spectrum[:, system.grid] = (fluctuation + rail_top[:, 1:]) * samples
     return (np.fft.irfft(spectrum, samples, axis=-1) + np.asarray(lift)[:, None]
-            + np.asarray(profile(float(passage.speed) * t[None, :] - positions[:, None])))
+            + rail_top[:, :1].real)

@@ -20,6 +20,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..equations.wheel_harmonic_balance import profile_harmonics
 from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..model.profile import smooth_rail
@@ -107,8 +108,9 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail,
 
 
 def _wrap(passage, wheel, profile, raw) -> WheelSolution:
+    rail_top = profile_harmonics(passage, profile, raw.grid, raw.sleepers.samples)
     return WheelSolution(passage, wheel, profile, raw.sleepers.harmonics, raw.grid,
-                         raw.contact_harmonics, raw.compression_harmonics, raw.lift,
+                         raw.contact_harmonics, raw.compression_harmonics, raw.lift, rail_top,
                          raw.sleepers, raw.converged, raw.residual, raw.iterations, raw.message)
 
 

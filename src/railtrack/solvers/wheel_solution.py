@@ -41,6 +41,9 @@ class WheelSolution:
         P_{k,p} [N] and the harmonics of delta_k without the profile [m].
     lift : ndarray, shape (K,)
         Mean of delta_k minus the profile's mean [m].
+    profile_harmonics : ndarray, shape (K, lmax+1)
+        The profile under each wheel, its mean and harmonics p = grid [m]:
+        the solution sees the profile through them.
     sleepers : CellSolution
     converged : bool
     residual : float
@@ -60,6 +63,7 @@ class WheelSolution:
     contact_harmonics: np.ndarray
     compression_harmonics: np.ndarray
     lift: np.ndarray
+    profile_harmonics: np.ndarray
     sleepers: CellSolution
     converged: bool
     residual: float
@@ -85,9 +89,8 @@ class WheelSolution:
 
     def compression(self, t: ArrayLike) -> np.ndarray:
         """delta_k(t) [m], shape (K,) + t.shape; the wheel is off the rail where < 0."""
-        lift = self.lift.reshape((-1,) + (1,) * np.ndim(t))
-        return (self._series(self.compression_harmonics, t) + lift
-                + np.asarray(self.profile(self._positions(t))))
+        mean = (self.lift + self.profile_harmonics[:, 0].real).reshape((-1,) + (1,) * np.ndim(t))
+        return self._series(self.compression_harmonics + self.profile_harmonics[:, 1:], t) + mean
 
     def contact_force(self, t: ArrayLike) -> np.ndarray:
         """P_k(t) = C_H max(delta_k, 0)^{3/2} [N], shape (K,) + t.shape."""

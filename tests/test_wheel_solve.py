@@ -1,0 +1,162 @@
+"""Harmonic balance with wheels on Hertz springs (issue 20).
+
+Truths: today's constant-force solve (the limits m_w -> 0 and C_H -> infinity);
+the wheel's mean balance (mean P = Q exactly, with an infinitely soft primary
+suspension); finite differences of the residual (the structured Jacobian);
+the time-domain ring with the same wheels (8 elements a span, 120 steps per
+sleeper passage, within 0.05 % of a ring twice as fine: /work notes of the
+issue); and the refusals of inputs with no steady state.
+"""
+
+import numpy as np
+import pytest
+
+import railtrack as rt
+from railtrack.equations.wheel_harmonic_balance import wheel_residual, wheel_system
+from railtrack.solvers.cell_newton import solve_cell
+from railtrack.solvers.wheel_newton import _hertz_tangent, _packed_harmonics, track_under_wheels
+
+TRACK = rt.Track.paper()
+LAW = rt.LinearFoundation(20e6, 0.2e6)
+DIP = rt.CosineDip(0.5e-3, 1.0, 18.0, centre=9.3)
+
+
+def train(speed):
+    return rt.Train.paper(speed=speed)
+
+
+def test_a_massless_wheel_presses_with_its_load_and_leaves_todays_track():
+    today = rt.solve(TRACK, train(45.0), LAW, 120, stability="off")
+    result = rt.solve(TRACK, train(45.0), LAW, 120, wheel=rt.Wheel(1e-3))
+    t = result.one_period()
+    assert result.converged
+    np.testing.assert_allclose(result.contact_force(t), 75e3, rtol=1e-6)
+    np.testing.assert_allclose(result.sleepers.coefficients[0], today.coefficients, rtol=0,
+                               atol=1e-8 * np.abs(today.coefficients).max())
+
+
+def test_the_contact_force_departs_from_q_in_proportion_to_the_wheel_mass():
+    # on the dipped weld, P - Q = -m_w z'' to first order in m_w
+    swings = []
+    for mass in (1.0, 0.1):
+        result = rt.solve(TRACK, train(45.0), LAW, 120, wheel=rt.Wheel(mass), profile=DIP)
+        swings.append(np.abs(result.contact_force(result.one_period()) - 75e3).max())
+    assert 9.5 < swings[0] / swings[1] < 10.5
+
+
+def test_a_stiff_contact_on_a_light_wheel_is_todays_constant_force():
+    today = rt.solve(TRACK, train(45.0), LAW, 120, stability="off")
+    result = rt.solve(TRACK, train(45.0), LAW, 120,
+                      wheel=rt.Wheel(1e-3, hertz_constant=1e16))
+    assert result.converged
+    np.testing.assert_allclose(result.contact_force(result.one_period()), 75e3, rtol=1e-6)
+    np.testing.assert_allclose(result.sleepers.coefficients[0], today.coefficients, rtol=0,
+                               atol=1e-8 * np.abs(today.coefficients).max())
+
+
+def test_the_mean_contact_force_is_the_static_load_on_a_dipped_weld():
+    result = rt.solve(TRACK, train(60.0), LAW, 200, wheel=rt.Wheel(600.0), profile=DIP)
+    force = result.contact_force(result.one_period(8192))
+    assert result.converged
+    assert force.max() > 90e3 and force.min() < 60e3              # a real dynamic force
+    np.testing.assert_allclose(force.mean(axis=1), 75e3, rtol=1e-9)
+
+
+def _small_case():
+    passage = rt.Passage(TRACK, train(45.0))
+    cell = rt.SleeperCell.identical(passage, LAW, 3).with_sleeper(
+        1, foundation=rt.LinearFoundation(5e6, 0.05e6), pad_stiffness=9e7)
+    wheel = rt.Wheel(600.0)
+    return passage, cell, wheel, wheel_system(passage, cell, wheel, 30, 512)
+
+
+def test_the_track_under_the_wheels_is_the_derivative_of_the_residual_pipeline():
+    passage, cell, wheel, system = _small_case()
+    lmax, k_w = system.grid.size, 2
+    ops = system.ops
+    s = 1j * ops.omega[:, None]
+    support = cell.sleeper_mass * s**2 + np.array([f.linearization()[0] for f in
+                                                   cell.foundations]) + s * np.array(
+        [f.linearization()[1] for f in cell.foundations])
+    receptance = track_under_wheels(system, cell, support)
+
+    def delta(x):
+        rows = x.reshape(k_w, 2 * lmax + 1)
+        forces = rows[:, 1:lmax + 1] + 1j * rows[:, lmax + 1:]
+        from railtrack.equations.wheel_harmonic_balance import wheel_loads
+        c = solve_cell(passage, cell, 30, samples=512,
+                       extra_load=wheel_loads(system, forces)).coefficients[:, 30:]
+        _, _, samples, _ = wheel_residual(passage, cell, wheel, rt.model.profile.smooth_rail,
+                                          system, c, forces, rows[:, 0])
+        return _packed_harmonics(samples, system.grid).ravel()
+
+    rng = np.random.default_rng(1)
+    x = rng.normal(size=k_w * (2 * lmax + 1)) * 1e3
+    for column in rng.choice(x.size, 6, replace=False):
+        step = np.zeros_like(x)
+        step[column] = 10.0
+        difference = (delta(x + step) - delta(x - step)) / 20.0
+        np.testing.assert_allclose(receptance[:, column], difference, rtol=1e-6,
+                                   atol=1e-5 * np.abs(receptance[:, column]).max())
+
+
+def test_the_hertz_tangent_is_the_derivative_of_the_contact_forces():
+    wheel, grid = rt.Wheel(600.0), np.arange(1, 6) * 3
+    t = np.arange(256) / 256
+    base = 80e-6 + 20e-6 * np.cos(2 * np.pi * 3 * t) + 15e-6 * np.sin(2 * np.pi * 9 * t + 0.3)
+    delta = np.stack([base, base[::-1]])
+    tangent = _hertz_tangent(wheel, delta, grid)
+    synthesis = np.hstack([np.ones((256, 1)), 2 * np.cos(2 * np.pi * np.outer(t, grid)),
+                           -2 * np.sin(2 * np.pi * np.outer(t, grid))])
+    for column in range(2 * grid.size + 1):
+        h = 1e-10 * synthesis[:, column]
+        difference = (_packed_harmonics(wheel.contact_force(delta + h), grid)
+                      - _packed_harmonics(wheel.contact_force(delta - h), grid)) / 2e-10
+        np.testing.assert_allclose(tangent[:, :, column], difference, rtol=1e-5,
+                                   atol=1e-6 * np.abs(tangent).max())
+
+
+@pytest.mark.parametrize("speed", [45.0, 100.0])
+def test_the_smooth_rail_matches_the_ring(speed):
+    result = rt.solve(TRACK, train(speed), LAW, 180, wheel=rt.Wheel(600.0))
+    ring = rt.simulate_time_domain(TRACK, train(speed), LAW, 8, 3600, wheel=rt.Wheel(600.0),
+                                   tol=1e-5, warn_step_error=None)
+    assert result.converged and ring.converged
+    swing = ring.contact_forces.max(axis=0) - ring.contact_forces.min(axis=0)
+    assert swing.min() > 500.0                      # the sleepers' passing is felt
+    extremes = result.extremes()
+    np.testing.assert_allclose(extremes["max"], ring.contact_forces.max(axis=0),
+                               atol=0.05 * swing.max())
+    np.testing.assert_allclose(extremes["min"], ring.contact_forces.min(axis=0),
+                               atol=0.05 * swing.max())
+
+
+def test_the_dipped_weld_matches_the_ring():
+    result = rt.solve(TRACK, train(45.0), LAW, 300, wheel=rt.Wheel(600.0), profile=DIP)
+    ring = rt.simulate_time_domain(TRACK, train(45.0), LAW, 8, 3600, wheel=rt.Wheel(600.0),
+                                   profile=DIP, tol=1e-5, warn_step_error=None)
+    assert result.converged and ring.converged
+    extremes = result.extremes()
+    np.testing.assert_allclose(extremes["max"], ring.contact_forces.max(axis=0), atol=100.0)
+    np.testing.assert_allclose(extremes["min"], ring.contact_forces.min(axis=0), atol=100.0)
+    t = result.one_period(4096)
+    np.testing.assert_allclose(np.abs(result.wheel_displacement(t)).max(axis=1),
+                               np.abs(ring.wheel_displacements).max(axis=0), rtol=5e-3)
+    np.testing.assert_allclose(result.rail_seat_load(t).max(),
+                               ring.rail_seat_loads.max(), rtol=5e-3)
+
+
+def test_inputs_without_a_steady_state_are_refused():
+    with pytest.raises(ValueError, match="whole number of sleeper spacings"):
+        rt.solve(TRACK, train(45.0), LAW, 60, wheel=rt.Wheel(600.0),
+                 profile=rt.CosineDip(0.5e-3, 1.0, 17.9))
+    with pytest.raises(ValueError, match="repeat every"):
+        rt.solve(TRACK, train(45.0), LAW, 60, wheel=rt.Wheel(600.0),
+                 profile=lambda x: 1e-4 * np.sin(x))
+    with pytest.raises(ValueError, match="whole number of cells"):
+        rt.solve(TRACK, train(45.0), LAW, 60, wheel=rt.Wheel(600.0),
+                 profile=rt.CosineDip(0.5e-3, 1.0, 4.2))
+    with pytest.raises(ValueError, match="primary suspension"):
+        rt.solve(TRACK, train(45.0), LAW, 60, wheel=rt.Wheel(600.0, primary_stiffness=1e6))
+    with pytest.raises(ValueError, match="a profile is felt through wheels"):
+        rt.solve(TRACK, train(45.0), LAW, 60, profile=DIP)
