@@ -136,12 +136,8 @@ def rail_under_wheels(system: WheelSystem, reaction: np.ndarray) -> np.ndarray:
     phased = reaction * system.sleeper_phase.T.reshape(system.sleeper_phase.T.shape
                                                        + (1,) * (reaction.ndim - 2))
     spectrum = np.fft.fft(phased, axis=0)                                  # (N, 2m+1, ...)
-    out = np.empty(system.under_wheel.shape[:1] + system.under_wheel.shape[2:]
-                   + reaction.shape[2:], dtype=complex)
-    for r in np.unique(system.mode_of_wheel):
-        rows = np.flatnonzero(system.mode_of_wheel == r)
-        out[rows] = np.tensordot(system.under_wheel[rows], spectrum[r], axes=([1], [0]))
-    return out
+    read = spectrum[system.mode_of_wheel]                                  # (lmax, 2m+1, ...)
+    return np.einsum("lnk,ln...->lk...", system.under_wheel, read)
 
 
 def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
