@@ -190,9 +190,12 @@ def simulate_time_domain(
     timoshenko : railtrack.model.timoshenko.TimoshenkoRail, optional
         A Timoshenko rail (shear stiffness, rotary inertia) of two-node
         interdependent-interpolation elements (`railtrack.timedomain.rail_elements`),
-        whose own interpolation carries the wheels; default the Euler–Bernoulli
-        rail.  The time-step error estimate and a harmonic-balance start stay
-        those of the Euler–Bernoulli rail.
+        whose own interpolation plus the local sag g(xi) P carries the wheels
+        (`railtrack.timedomain.ring_wheels`); default the Euler–Bernoulli rail.
+        Its slope jumps by R / kGA above each point-supported sleeper, which
+        the wheels feel, and its undamped higher pinned-pinned modes may keep
+        the wheels' period change near 1e-4.  The time-step error estimate and
+        a harmonic-balance start stay those of the Euler–Bernoulli rail.
 
     Returns
     -------
