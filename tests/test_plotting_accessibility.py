@@ -46,6 +46,7 @@ from railtrack.plotting.book import paper_figures as pf  # noqa: E402
 from railtrack.plotting.book import passage as pp  # noqa: E402
 from railtrack.plotting.book import rail_span as rs  # noqa: E402
 from railtrack.plotting.book import sleepers as slp  # noqa: E402
+from railtrack.plotting.book import wheels as whl  # noqa: E402
 from railtrack.plotting.book import speed as sp  # noqa: E402
 from railtrack.plotting.branch import plot_branch, plot_multipliers, ramp_on_branch  # noqa: E402
 from railtrack.plotting.solution import plot_solution  # noqa: E402
@@ -281,7 +282,23 @@ def _support(variation):
                              variation=variation, draws=5, harmonics=10)
 
 
+def _wheels():
+    return {f"{v:.0f} m/s": rt.solve(PASSAGE.track, rt.Train.paper(speed=v), LINEAR, 60,
+                                     wheel=rt.Wheel(600.0))
+            for v in (45.0, 100.0)}
+
+
 FIGURES = {
+    "wheels.plot_contact_along_track": lambda: whl.plot_contact_along_track(
+        _wheels(), window=(6.0, 7.8), samples=512),
+    "wheels.plot_dip_against_speed": lambda: whl.plot_dip_against_speed(
+        np.array([20.0, 40.0]), {"a": np.array([80e3, 90e3]), "b": np.array([82e3, np.nan])},
+        75e3),
+    "wheels.plot_loss_of_contact": lambda: whl.plot_loss_of_contact(
+        _wheels()["45 m/s"], (6.0, 7.8), samples=512),
+    "wheels.plot_rail_receptances": lambda: whl.plot_rail_receptances(
+        np.linspace(20.0, 2000.0, 50), {"a": np.linspace(1, 2, 50) * 1e-9,
+                                        "b": np.linspace(2, 1, 50) * 1e-9}, {"mark": 1000.0}),
     "sleepers.plot_bowl": lambda: slp.plot_bowl(_cells(), 2, reach=2, points=61),
     "sleepers.plot_seat_histories": lambda: slp.plot_seat_histories(_cells(), (1, 2)),
     "sleepers.plot_random_support": lambda: slp.plot_random_support(

@@ -1,0 +1,103 @@
+"""Figures of the chapter "The wheel on the rail": contact forces, the dip, the P2 force, Timoshenko.
+
+Each function draws what the library computed; nothing is solved here.
+Units on the page: kN, mm, um, m, m/s, Hz; the library's SI values are converted.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from ..style import new_figure, series_style
+
+__all__ = ["plot_contact_along_track", "plot_dip_against_speed", "plot_loss_of_contact",
+           "plot_rail_receptances"]
+
+KN = 1e-3
+
+
+def plot_contact_along_track(solutions: dict, wheel: int = 0, window: tuple[float, float] | None
+                             = None, samples: int = 4096, sleepers: bool = True) -> Figure:
+    """Contact force of wheel `wheel` against its position along the track, one line each.
+
+    `window` (x_min, x_max) [m] limits the abscissa (default: one wagon length);
+    thin grey lines mark the sleepers.
+    """
+    fig, ax = new_figure(1, 1, width=7.0, height=3.0)
+    first = next(iter(solutions.values()))
+    wagon, span = float(first.passage.wagon_length), float(first.passage.sleeper_spacing)
+    lo, hi = (0.0, wagon) if window is None else window
+    for i, (label, solution) in enumerate(solutions.items()):
+        t = solution.one_period(samples)
+        x = np.mod(float(solution.passage.speed) * t
+                   - float(solution.passage.axle_positions[wheel]), wagon)
+        order = np.argsort(x)
+        force = solution.contact_force(t)[wheel][order] * KN
+        keep = (x[order] >= lo) & (x[order] <= hi)
+        ax.plot(x[order][keep], force[keep], label=label, **series_style(i))
+    if sleepers:
+        for xs in np.arange(np.ceil(lo / span), np.floor(hi / span) + 1) * span:
+            ax.axvline(xs, color="0.8", lw=0.6, zorder=0)
+    ax.set_xlim(lo, hi)
+    ax.set_xlabel("wheel position along the track x [m] (grey: sleepers)")
+    ax.set_ylabel("contact force P [kN]")
+    ax.grid(True, axis="y", alpha=0.3)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def plot_dip_against_speed(speeds: np.ndarray, curves: dict, static_load: float) -> Figure:
+    """Largest contact force [N] against speed [m/s], one line per entry of `curves`.
+
+    An entry is an array over `speeds`; NaN leaves a gap (a formula that does not apply).
+    """
+    fig, ax = new_figure(1, 1, width=6.5, height=3.2)
+    for i, (label, values) in enumerate(curves.items()):
+        ax.plot(speeds, np.asarray(values) * KN, label=label, marker="o", ms=3,
+                **series_style(i))
+    ax.axhline(static_load * KN, color="0.5", lw=0.8, ls=":", label="static load Q")
+    ax.set_xlabel("speed v [m/s]")
+    ax.set_ylabel("largest contact force [kN]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def plot_loss_of_contact(solution, window: tuple[float, float], samples: int = 16384) -> Figure:
+    """Contact force and compression of every wheel through `window` [m] of its path."""
+    fig, axes = new_figure(2, 1, width=7.0, height=4.2, sharex=True)
+    wagon = float(solution.passage.wagon_length)
+    t = solution.one_period(samples)
+    force, compression = solution.contact_force(t) * KN, solution.compression(t) * 1e6
+    for k, d in enumerate(np.asarray(solution.passage.axle_positions, dtype=float)):
+        x = np.mod(float(solution.passage.speed) * t - d, wagon)
+        order = np.argsort(x)
+        keep = (x[order] >= window[0]) & (x[order] <= window[1])
+        style = series_style(k)
+        axes[0].plot(x[order][keep], force[k][order][keep], label=f"wheel {k + 1}", **style)
+        axes[1].plot(x[order][keep], compression[k][order][keep], **style)
+    axes[1].axhline(0.0, color="k", lw=0.8)
+    axes[0].set_ylabel("contact force P [kN]")
+    axes[1].set_ylabel("compression δ [µm]")
+    axes[1].set_xlabel("wheel position along the track x [m]")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(fontsize=8)
+    return fig
+
+
+def plot_rail_receptances(frequency: np.ndarray, receptances: dict,
+                          marks: dict | None = None) -> Figure:
+    """|receptance| [m/N] against frequency [Hz] on a log scale, one line per entry;
+    `marks` (label -> frequency [Hz]) draws vertical lines."""
+    fig, ax = new_figure(1, 1, width=6.5, height=3.2)
+    for i, (label, values) in enumerate(receptances.items()):
+        ax.semilogy(frequency, np.abs(values), label=label, **series_style(i))
+    for i, (label, f) in enumerate((marks or {}).items()):
+        ax.axvline(f, color=series_style(i)["color"], lw=0.8, ls=":", label=label)
+    ax.set_xlabel("frequency [Hz]")
+    ax.set_ylabel("|receptance| [m/N]")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    return fig
