@@ -140,10 +140,42 @@ def test_the_dipped_weld_matches_the_ring():
     np.testing.assert_allclose(extremes["max"], ring.contact_forces.max(axis=0), atol=100.0)
     np.testing.assert_allclose(extremes["min"], ring.contact_forces.min(axis=0), atol=100.0)
     t = result.one_period(4096)
+    # the wheel's mean height from the rail's mean under it: to 0.05 % (it was 0.2 % off
+    # before the wheels' uneven mean load entered it)
     np.testing.assert_allclose(np.abs(result.wheel_displacement(t)).max(axis=1),
-                               np.abs(ring.wheel_displacements).max(axis=0), rtol=5e-3)
+                               np.abs(ring.wheel_displacements).max(axis=0), rtol=5e-4)
     np.testing.assert_allclose(result.rail_seat_load(t).max(),
                                ring.rail_seat_loads.max(), rtol=5e-3)
+
+
+def test_a_wheel_that_leaves_the_rail_lands_as_in_the_ring():
+    # a 2 mm dip at 80 m/s on the ballasted track: both wheels fly, for about 2 and 3.4 ms
+    track, ballast = rt.Track.ballasted(), rt.LinearFoundation.ballasted()
+    deep = rt.CosineDip(2e-3, 1.0, 18.0, centre=9.3)
+    # the landing wants more harmonics than the dip alone: m = 300 is 0.45 kN off there
+    result = rt.solve(track, train(80.0), ballast, 450, wheel=rt.Wheel(600.0), profile=deep)
+    ring = rt.simulate_time_domain(track, train(80.0), ballast, 8, 7200, wheel=rt.Wheel(600.0),
+                                   profile=deep, tol=1e-5, warn_step_error=None)
+    assert result.converged and ring.converged
+    share, longest = result.loss_of_contact()
+    ring_share, ring_longest = ring.loss_of_contact()
+    assert np.all(longest > 1.5e-3)
+    step = float(ring.times[1] - ring.times[0])
+    np.testing.assert_allclose(longest, ring_longest, atol=2 * step)
+    np.testing.assert_allclose(result.extremes()["max"], ring.contact_forces.max(axis=0),
+                               atol=300.0)
+    t = result.one_period(8192)
+    force = result.contact_force(t)
+    assert np.all(force[result.compression(t) <= 0] == 0.0)
+
+
+def test_the_rail_field_of_the_wheels_sleepers_is_refused_not_wrong():
+    result = rt.solve(TRACK, train(45.0), LAW, 60, wheel=rt.Wheel(600.0))
+    with pytest.raises(NotImplementedError, match="varying forces"):
+        result.sleepers.rail_displacement(0.0, 0.3)
+    with pytest.raises(NotImplementedError, match="varying forces"):
+        result.sleepers.rail_bending_moment(0.0, 0.3)
+    assert np.isfinite(result.sleepers.rail_above_sleepers(0.0)).all()
 
 
 def test_inputs_without_a_steady_state_are_refused():

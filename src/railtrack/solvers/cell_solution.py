@@ -49,6 +49,10 @@ class CellSolution:
     truncation_error : float
         Estimated max-norm error of the sleepers' displacements from keeping m
         harmonics, relative to the largest peak in the cell [-]; NaN if not estimated.
+    rail_field_note : str
+        Non-empty where `rail_displacement` and `rail_bending_moment` do not
+        hold (the sleepers of a `railtrack.WheelSolution`): why, raised as the
+        error's message.
     """
 
     passage: Passage
@@ -64,6 +68,7 @@ class CellSolution:
     residual_history: np.ndarray
     message: str
     truncation_error: float = float("nan")
+    rail_field_note: str = ""
 
     @property
     def sleepers(self) -> int:
@@ -143,7 +148,12 @@ class CellSolution:
         `rail_above_sleepers`, and for a cell of identical sleepers it is
         `railtrack.Solution.rail_displacement`.
         """
+        self._check_rail_field()
         return self._field(t, x, 0)
+
+    def _check_rail_field(self) -> None:
+        if self.rail_field_note:
+            raise NotImplementedError(self.rail_field_note)
 
     def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
                             kinks: str = "closed form") -> np.ndarray:
@@ -153,6 +163,7 @@ class CellSolution:
         (`railtrack.equations.moment`), as `railtrack.Solution.rail_bending_moment`
         does; ``kinks="series"`` gives the plain truncated series.
         """
+        self._check_rail_field()
         ei = self.passage.rail_bending_stiffness
         if kinks == "closed form":
             return ei * self._field(t, x, 1) + kink_sum(self.passage, t, x)

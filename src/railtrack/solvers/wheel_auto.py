@@ -107,11 +107,19 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail,
     return result
 
 
+RAIL_FIELD_NOTE = (
+    "with wheels the rail between the sleepers also carries the wheels' varying forces, which "
+    "this field leaves out; the rail above the sleepers (rail_above_sleepers), the sleepers, "
+    "their rail-seat loads and foundation forces are complete, and the wheels' own outputs "
+    "are on the WheelSolution")
+
+
 def _wrap(passage, wheel, profile, raw) -> WheelSolution:
     rail_top = profile_harmonics(passage, profile, raw.grid, raw.sleepers.samples)
+    sleepers = replace(raw.sleepers, rail_field_note=RAIL_FIELD_NOTE)
     return WheelSolution(passage, wheel, profile, raw.sleepers.harmonics, raw.grid,
                          raw.contact_harmonics, raw.compression_harmonics, raw.lift, rail_top,
-                         raw.sleepers, raw.converged, raw.residual, raw.iterations, raw.message)
+                         sleepers, raw.converged, raw.residual, raw.iterations, raw.message)
 
 
 def _auto(passage, cell, wheel, profile, groups, accuracy, tol, scale) -> WheelSolution:
