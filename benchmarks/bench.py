@@ -246,8 +246,49 @@ def bench_cells() -> None:
           f"| {elapsed * 1e3:.0f} | {elapsed / today:.0f} |")
 
 
+def bench_wheels() -> None:
+    """Wheels on Hertz springs (issue 20): harmonic balance at harmonics="auto" against
+    today's constant-force solve of the same track and against the time-domain ring.
+
+    The paper's track and wagon, m_w = 600 kg, C_H = 9.4e10 N/m^1.5.  The issue's
+    targets: within ten times today's solve, at least 100 times faster than the ring.
+    The ring runs at the resolution of the chapter's agreement table (8 elements a
+    bay, 120 steps a sleeper passage), timed RING_RUNS times.
+    """
+    track, train = rt.Track.paper(), rt.Train.paper()
+    wheel = rt.Wheel(600.0)
+    dip = rt.CosineDip(0.5e-3, 1.0, 18.0, centre=9.3)
+    cases = (("smooth rail, linear ballast", rt.LinearFoundation(20e6, 0.2e6), None),
+             ("smooth rail, cubic law (eq. 25)", rt.CubicFoundation.paper(), None),
+             ("0.5 mm x 1 m dip, linear ballast", rt.LinearFoundation(20e6, 0.2e6), dip))
+    print()
+    print("| 45 m/s | m | wheels [ms] | constant forces [ms] | ratio | ring [s] | ring / wheels |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for name, law, profile in cases:
+        result = rt.solve(track, train, law, wheel=wheel, profile=profile)
+        repeat = 5 if profile is None else 1
+        wheels = median_time(lambda: rt.solve(track, train, law, wheel=wheel, profile=profile),
+                             repeat)
+        today = median_time(lambda: rt.solve(track, train, law, stability="off"), 10)
+        ring = statistics.median(_timed(lambda: rt.simulate_time_domain(
+            track, train, law, 8, 3600, wheel=wheel, profile=profile, tol=1e-5,
+            warn_step_error=None)) for _ in range(RING_RUNS))
+        print(f"| {name} | {result.harmonics} | {wheels * 1e3:.0f} | {today * 1e3:.1f} "
+              f"| {wheels / today:.0f} | {ring:.1f} | {ring / wheels:.0f} |")
+
+
+RING_RUNS = 3
+"""Runs of each ring (5-20 s each)."""
+
+
+def _timed(function) -> float:
+    start = time.perf_counter()
+    function()
+    return time.perf_counter() - start
+
+
 SECTIONS = {"solvers": main, "sweep": bench_sweep, "stability": bench_stability,
-            "cells": bench_cells}
+            "cells": bench_cells, "wheels": bench_wheels}
 
 
 if __name__ == "__main__":

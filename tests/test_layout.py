@@ -31,6 +31,7 @@ PUBLIC = {
     "load_work", "floquet", "Floquet", "StabilityChange", "UnstableSolutionWarning",
     "ring_multipliers", "RingMultipliers", "SleeperCell", "GapFoundation", "CellSolution",
     "random_support", "RandomSupport", "Wheel", "CosineDip", "WheelSolution",
+    "TimoshenkoRail", "p2_force", "EquivalentTrack", "equivalent_track",
 }
 
 

@@ -65,6 +65,8 @@ from .studies.random_support import RandomSupport, random_support
 from .model.wheel import Wheel
 from .model.profile import CosineDip
 from .solvers.wheel_solution import WheelSolution
+from .model.timoshenko import TimoshenkoRail
+from .studies.p2_force import EquivalentTrack, equivalent_track, p2_force
 from .model.track import Track
 from .model.train import Train
 
@@ -98,6 +100,10 @@ __all__ = [
     "Wheel",
     "CosineDip",
     "WheelSolution",
+    "TimoshenkoRail",
+    "p2_force",
+    "EquivalentTrack",
+    "equivalent_track",
     "as_foundation",
     "solve",
     "METHODS",

@@ -70,7 +70,8 @@ def _linear_guess(passage: Passage, cell: SleeperCell, ops) -> np.ndarray:
 def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: float = 1e-10,
                max_iterations: int = 50, samples: int | None = None,
                initial: np.ndarray | None = None,
-               extra_load: np.ndarray | None = None) -> CellSolution:
+               extra_load: np.ndarray | None = None,
+               operators=None) -> CellSolution:
     """Periodic response of a cell of N sleepers on their own laws, by Newton [m].
 
     Parameters
@@ -121,8 +122,13 @@ def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: floa
     require_jacobian_samples(samples, m)
     omega = passage.fundamental_frequency * np.arange(m + 1)
     sleeper_weight, rail_weight = cell.weights(passage)
-    ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, omega,
-                         sleeper_weight=sleeper_weight, rail_weight=rail_weight)
+    if operators is None:
+        ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, omega,
+                             sleeper_weight=sleeper_weight, rail_weight=rail_weight)
+    else:
+        ops = operators
+        if ops.omega.shape != omega.shape or not np.allclose(ops.omega, omega, rtol=1e-12):
+            raise ValueError("operators were built for other frequencies than this solve's")
     if extra_load is not None:
         ops = ops._replace(load=ops.load + np.asarray(extra_load))
     if not all(np.all(np.isfinite(x)) for x in ops[1:]):

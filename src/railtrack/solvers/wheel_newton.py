@@ -202,7 +202,7 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
 
     def evaluate(vector, start):
         forces, y = _unpack(vector, k_w, lmax)
-        inner = solve_cell(passage, cell, m, samples=samples,
+        inner = solve_cell(passage, cell, m, samples=samples, operators=system.ops,
                            extra_load=wheel_loads(system, forces),
                            initial=start)
         c = inner.coefficients[:, m:]
