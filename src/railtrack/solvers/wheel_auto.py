@@ -42,6 +42,16 @@ def wheel_cell(passage: Passage, support, profile) -> SleeperCell:
     ValueError
         A profile that does not repeat with the cell, or a cell that H does
         not hold a whole number of times.
+
+    Examples
+    --------
+    >>> import railtrack as rt
+    >>> passage = rt.Passage(rt.Track.paper(), rt.Train.paper())
+    >>> law = rt.LinearFoundation(20e6, 0.2e6)
+    >>> wheel_cell(passage, law, smooth_rail).sleepers                 # sleeper passing
+    1
+    >>> wheel_cell(passage, law, rt.CosineDip(0.5e-3, 1.0, 18.0)).sleepers   # a weld a wagon
+    30
     """
     span, wagon = float(passage.sleeper_spacing), float(passage.wagon_length)
     if isinstance(support, SleeperCell):

@@ -53,6 +53,17 @@ class WheelSolution:
     truncation_error : float
         Estimated error of the contact force from keeping m harmonics, over
         the largest static wheel load [-]; NaN if not estimated.
+
+    Examples
+    --------
+    >>> import railtrack as rt
+    >>> solution = rt.solve(rt.Track.paper(), rt.Train.paper(), rt.LinearFoundation(20e6, 0.2e6),
+    ...                     60, wheel=rt.Wheel(600.0))
+    >>> solution.converged, solution.grid      # the wheels feel the 30 sleepers of a wagon
+    (True, array([30, 60]))
+    >>> e = solution.extremes()
+    >>> [round(float(p) / 1e3, 1) for p in e["max"]], round(float(e["mean"][0]) / 1e3, 6)
+    ([75.4, 75.5], 75.0)
     """
 
     passage: Passage
