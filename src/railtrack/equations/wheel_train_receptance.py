@@ -51,7 +51,8 @@ def _roots(passage: Passage, omega: float) -> np.ndarray:
     return np.roots([ei, 0.0, -rho_s * v**2, 2.0 * rho_s * omega * v, -rho_s * omega**2])
 
 
-def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike) -> np.ndarray:
+def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
+                           order: int = 0) -> np.ndarray:
     """D_p(Delta) of the module docstring [m/N]: the free rail at a distance behind a wheel.
 
     Parameters
@@ -63,6 +64,9 @@ def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike) ->
     offset : array_like
         Delta = d - d' [m], how far the loaded wheel (at x = vt - d) is ahead
         of the point read (x = vt - d'), taken modulo H.
+    order : int
+        0 for D_p, 2 for its second derivative in Delta (the rail's curvature,
+        continuous across the wheel) [1/(N m)].
 
     Returns
     -------
@@ -93,7 +97,7 @@ def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike) ->
             term = -1j * np.exp(1j * a * delta) / (np.exp(1j * a * wagon) - 1.0)
         else:                # |e^{iaH}| > 1: divide through by e^{iaH}
             term = -1j * np.exp(1j * a * (delta - wagon)) / (1.0 - np.exp(-1j * a * wagon))
-        total += term / slope
+        total += term * (1j * a) ** order / slope
     return total
 
 

@@ -119,9 +119,9 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail,
 
 RAIL_FIELD_NOTE = (
     "with wheels the rail between the sleepers also carries the wheels' varying forces, which "
-    "this field leaves out; the rail above the sleepers (rail_above_sleepers), the sleepers, "
-    "their rail-seat loads and foundation forces are complete, and the wheels' own outputs "
-    "are on the WheelSolution")
+    "this field leaves out: ask the WheelSolution (its rail_displacement and "
+    "rail_bending_moment add them); the rail above the sleepers, the sleepers, their "
+    "rail-seat loads and foundation forces are complete here")
 
 
 def _wrap(passage, wheel, profile, raw) -> WheelSolution:

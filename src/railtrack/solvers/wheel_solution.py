@@ -17,6 +17,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from ..equations.moment import kink_sum
+from ..equations.wheel_train_receptance import wheel_train_receptance
 from ..model.passage import Passage
 from .cell_solution import CellSolution
 
@@ -122,24 +124,67 @@ class WheelSolution:
         # The mean of the rail under a moving wheel takes only the wheels' static
         # loads and the sleepers' reactions (a varying force reaches the wheel at
         # its own harmonic, never the mean): the rail field of `sleepers`, read
-        # along the wheel's path.  That field anchors its mean at sleeper 0 under a
-        # uniform mean load; the wheels' mean load is not uniform where their force
-        # varies along the track, and its static sag at sleeper 0 (a free beam of
-        # the cell's period, Bernoulli's B4) is taken off.  Checked against the ring
-        # to 0.01 um (tests/test_wheel_solve.py).
-        # the field is band-limited to the m harmonics: 1024 samples average it
-        # exactly for m < 1024; the force's kinks (loss of contact) want more
+        # along the wheel's path, less the anchor's error (`_anchor_sag`).
+        # Checked against the ring to 0.01 um (tests/test_wheel_solve.py).
+        # The field is band-limited to the m harmonics: 1024 samples average it
+        # exactly for m < 1024.
         t = np.arange(1024) * self.period / 1024
         path = self._positions(t)
         under = self.sleepers._field(np.broadcast_to(t, path.shape), path, 0)
+        return under.mean(axis=-1) - self._anchor_sag() - self.lift
+
+    def _anchor_sag(self) -> float:
+        """The static sag at sleeper 0 of the wheels' uneven mean load [m].
+
+        The rail field of `sleepers` anchors its mean at sleeper 0 under a
+        uniform mean load; where the wheels' force varies along the track
+        their mean load is not uniform, q(x) = sum_k P_k(x) / H, and the free
+        rail of the cell's period sags under its varying part by
+        ``sum_k mean_t[(P_k - mean P_k) Lambda^3 B4(x_k / Lambda)] / (24 EI)`` at
+        sleeper 0 (Bernoulli's B4, `railtrack.equations.cell_rail_field`).
+        """
         cell = self.sleepers.cell.sleepers * float(self.passage.sleeper_spacing)
-        t = self.one_period(4 * self.sleepers.samples)
+        t = self.one_period(4 * self.sleepers.samples)     # the force's kinks want samples
         force = self.contact_force(t)
         u = np.mod(self._positions(t) / cell, 1.0)
         shape = u**4 - 2 * u**3 + u**2 - 1.0 / 30.0
-        sag = np.sum(np.mean((force - force.mean(axis=1, keepdims=True)) * shape, axis=1)) \
-            * cell**3 / (24 * float(self.passage.rail_bending_stiffness))
-        return under.mean(axis=-1) - sag - self.lift
+        varying = force - force.mean(axis=1, keepdims=True)
+        return float(np.sum(np.mean(varying * shape, axis=1)) * cell**3
+                     / (24 * float(self.passage.rail_bending_stiffness)))
+
+    def _free_rail(self, t: ArrayLike, x: ArrayLike, derivative: int) -> np.ndarray:
+        """The free rail under the wheels' varying forces, eq. (13.2) at (t, x) [m or 1/m]."""
+        t, x = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(x, dtype=float))
+        out = np.zeros(t.shape)
+        omega = 2 * np.pi * self.grid / self.period
+        speed = float(self.passage.speed)
+        for k, d in enumerate(np.asarray(self.passage.axle_positions, dtype=float)):
+            offset = x - speed * t + d
+            for force, w in zip(self.contact_harmonics[k], omega):
+                shape = wheel_train_receptance(self.passage, float(w), offset, derivative)
+                out -= 2 * (force * np.exp(1j * w * t) * shape).real     # P presses down
+        return out
+
+    def rail_displacement(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
+        """w_r(x, t) [m] anywhere along the rail (x from sleeper 0); t, x broadcast.
+
+        The rail field of `sleepers` (their reactions and the wheels' static
+        loads) plus the free rail under the wheels' varying forces, eq.
+        (13.2), with the anchor at sleeper 0 corrected (`_anchor_sag`).
+        """
+        return (self.sleepers._field(t, x, 0) + self._free_rail(t, x, 0)
+                - self._anchor_sag())
+
+    def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
+        """EI d^2 w_r/dx^2 at time t [s] and position x [m] [N m], sagging positive.
+
+        `railtrack.CellSolution.rail_bending_moment` (the static loads' kinks in
+        closed form) plus EI times the curvature of eq. (13.2), which is
+        continuous across the wheel.
+        """
+        ei = float(self.passage.rail_bending_stiffness)
+        return (ei * self.sleepers._field(t, x, 1) + kink_sum(self.passage, t, x)
+                + ei * self._free_rail(t, x, 2))
 
     def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
         """Each sleeper's rail-seat load [N], (N,) + t.shape, positive in compression."""
