@@ -28,8 +28,9 @@ k = sqrt(s) (``sinh kL / (2k (cosh kL - cos q))`` for s = -k^2 < 0) give
 
     eta = [N(s_1) S(s_1) - N(s_2) S(s_2)] / (kGA EI (s_1 - s_2)).
 
-With s = +-k_b^2 and N = kGA this is eq. (3).  Derivation with SymPy:
-``/work/notes/timoshenko_derivation.py``.
+With s = +-k_b^2 and N = kGA this is eq. (3).  The book's chapter "The wheel
+on the rail" derives the dispersion relation and the partial fractions with
+SymPy; `timoshenko_receptance_lattice_sum` is the independent check.
 """
 
 from __future__ import annotations

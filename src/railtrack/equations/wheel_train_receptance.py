@@ -53,7 +53,7 @@ def _roots(passage: Passage, omega: float) -> np.ndarray:
 
 def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
                            order: int = 0) -> np.ndarray:
-    """D_p(Delta) of the module docstring [m/N]: the free rail at a distance behind a wheel.
+    """D_p(Delta) of the module docstring [m/N]: the free rail a distance Delta ahead of a wheel.
 
     Parameters
     ----------
@@ -62,8 +62,8 @@ def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
     omega : float
         omega_p != 0 [rad/s], the frequency of the wheels' forces.
     offset : array_like
-        Delta = d - d' [m], how far the loaded wheel (at x = vt - d) is ahead
-        of the point read (x = vt - d'), taken modulo H.
+        Delta = d - d' [m], how far the point read (x = vt - d') is ahead of
+        the loaded wheel (x = vt - d), taken modulo H.
     order : int
         0 for D_p, 2 for its second derivative in Delta (the rail's curvature,
         continuous across the wheel) [1/(N m)].

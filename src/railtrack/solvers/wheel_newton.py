@@ -7,12 +7,14 @@ mean height over the rail y_k, few.  For given wheel forces the sleepers
 are the constant-force cell with one more load, W P
 (`railtrack.solvers.cell_newton.solve_cell`, exact); what remains is the
 contact residual B(P, y) = [C_H max(delta, 0)^{3/2}]_p - P_p (- Q_k at p = 0).
-Its Jacobian is ``H T - I``: H the Hertz tangent 1.5 C_H delta^{1/2} by AFT
-(analysis, times the samples, times synthesis) and T the track's
-receptance under the moving wheels, delta per unit P and y, built once
-per step from the linear map P -> W P -> c -> reactions -> rail under the
-wheels (each sleeper's law replaced by its mean tangent: exact for linear
-laws, a quasi-Newton step for the others).  The residual reported is the
+Its Jacobian is ``K C - I`` (the book's chapter 13): K the Hertz tangent
+1.5 C_H delta^{1/2} by AFT (analysis, times the samples, times synthesis)
+and C the contact's compression per unit P and y (`track_under_wheels`):
+the wheel's own receptance 1/(m_w omega_p^2) less the track's receptance
+under the moving wheels, built once per step from the linear map
+P -> W P -> c -> reactions -> rail under the wheels (each sleeper's law
+replaced by its mean tangent: exact for linear laws, a quasi-Newton step
+for the others).  The residual reported is the
 full one, sleepers and contacts.
 """
 
@@ -55,7 +57,7 @@ class WheelNewton(NamedTuple):
 
 
 def track_under_wheels(system, cell, support: np.ndarray) -> np.ndarray:
-    """T: the harmonics of delta per unit wheel force and lift, real (K(2l+1), K(2l+1)) [m/N].
+    """C: the harmonics of delta per unit wheel force and lift, real (K(2l+1), K(2l+1)) [m/N].
 
     Per wheel the packing is ``[y or delta_0, Re x_1..l, Im x_1..l]``.
     ``support`` (m+1, N) [N/m] is each sleeper's dynamic stiffness
@@ -63,7 +65,7 @@ def track_under_wheels(system, cell, support: np.ndarray) -> np.ndarray:
 
     A wheel harmonic p loads one Floquet mode s of sleeper harmonic n, and
     the rail under wheel harmonic p_l reads one discrete Fourier index r_l of
-    the reactions, so T is a sum over n of products through
+    the reactions, so C is a sum over n of products through
     ``Q[n, s, r] = DFT_j(e^{i omega_n x_j/v} (-support_j) (A_n^{-1} basis_s)_j)[r]``,
     computed once (N x N per harmonic).  For identical sleepers Q is zero
     unless r = -s (mod N): only those blocks are summed.
