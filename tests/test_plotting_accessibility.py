@@ -290,12 +290,13 @@ def _wheels():
 
 FIGURES = {
     "wheels.plot_contact_along_track": lambda: whl.plot_contact_along_track(
-        _wheels(), window=(6.0, 7.8), samples=512),
+        _wheels(), window=(6.0, 7.8), samples=512, dip=rt.CosineDip(0.5e-3, 1.0, 18.0, centre=7.0)),
     "wheels.plot_dip_against_speed": lambda: whl.plot_dip_against_speed(
         np.array([20.0, 40.0]), {"a": np.array([80e3, 90e3]), "b": np.array([82e3, np.nan])},
         75e3),
     "wheels.plot_loss_of_contact": lambda: whl.plot_loss_of_contact(
-        _wheels()["45 m/s"], (6.0, 7.8), samples=512),
+        _wheels()["45 m/s"], (6.0, 7.8), samples=512,
+        dip=rt.CosineDip(0.5e-3, 1.0, 18.0, centre=7.0)),
     "wheels.plot_rail_receptances": lambda: whl.plot_rail_receptances(
         np.linspace(20.0, 2000.0, 50), {"a": np.linspace(1, 2, 50) * 1e-9,
                                         "b": np.linspace(2, 1, 50) * 1e-9}, {"mark": 1000.0}),

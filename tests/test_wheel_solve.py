@@ -60,6 +60,12 @@ def test_the_mean_contact_force_is_the_static_load_on_a_dipped_weld():
     assert result.converged
     assert force.max() > 90e3 and force.min() < 60e3              # a real dynamic force
     np.testing.assert_allclose(force.mean(axis=1), 75e3, rtol=1e-9)
+    # the wheel is pressed hardest where the dip bends upward, just past its lowest point
+    where = result.extremes()["where_max"]
+    assert np.all((where > 9.3) & (where < 9.3 + 0.25))
+    # a period later every wheel is a wagon length further on
+    np.testing.assert_allclose(result.wheel_position(result.period) - result.wheel_position(0.0),
+                               18.0, rtol=1e-12)
 
 
 def _small_case():

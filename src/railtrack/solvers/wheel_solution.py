@@ -95,7 +95,12 @@ class WheelSolution:
         phases = np.exp(1j * np.multiply.outer(t, omega))                   # (..., lmax)
         return 2 * np.einsum("kl,...l->k...", harmonics, phases).real
 
-    def _positions(self, t: ArrayLike) -> np.ndarray:
+    def wheel_position(self, t: ArrayLike) -> np.ndarray:
+        """x_k(t) = v t - d_k [m], wheel k's distance from sleeper 0; shape (K,) + t.shape.
+
+        Take it modulo the wagon length H to read it within one wagon, where
+        the profile and the cell repeat.
+        """
         t = np.asarray(t, dtype=float)
         d = np.asarray(self.passage.axle_positions, dtype=float)
         return float(self.passage.speed) * t[None] - d.reshape((-1,) + (1,) * t.ndim)
@@ -129,7 +134,7 @@ class WheelSolution:
         # The field is band-limited to the m harmonics: 1024 samples average it
         # exactly for m < 1024.
         t = np.arange(1024) * self.period / 1024
-        path = self._positions(t)
+        path = self.wheel_position(t)
         under = self.sleepers._field(np.broadcast_to(t, path.shape), path, 0)
         return under.mean(axis=-1) - self._anchor_sag() - self.lift
 
@@ -146,7 +151,7 @@ class WheelSolution:
         cell = self.sleepers.cell.sleepers * float(self.passage.sleeper_spacing)
         t = self.one_period(4 * self.sleepers.samples)     # the force's kinks want samples
         force = self.contact_force(t)
-        u = np.mod(self._positions(t) / cell, 1.0)
+        u = np.mod(self.wheel_position(t) / cell, 1.0)
         shape = u**4 - 2 * u**3 + u**2 - 1.0 / 30.0
         varying = force - force.mean(axis=1, keepdims=True)
         return float(np.sum(np.mean(varying * shape, axis=1)) * cell**3
@@ -206,7 +211,7 @@ class WheelSolution:
         """
         t = self.one_period(samples)
         force = self.contact_force(t)
-        where = np.mod(self._positions(t), float(self.passage.wagon_length))
+        where = np.mod(self.wheel_position(t), float(self.passage.wagon_length))
         rows = np.arange(force.shape[0])
         top, bottom = force.argmax(axis=1), force.argmin(axis=1)
         return {"max": force[rows, top], "where_max": where[rows, top],

@@ -17,12 +17,24 @@ __all__ = ["plot_contact_along_track", "plot_dip_against_speed", "plot_loss_of_c
 KN = 1e-3
 
 
+def _shade_dip(ax, dip) -> None:
+    """Shade the dip's extent, centre +- length / 2 [m], and mark its lowest point."""
+    if dip is None:
+        return
+    half = 0.5 * float(dip.length)
+    ax.axvspan(dip.centre - half, dip.centre + half, color="tab:orange", alpha=0.12, lw=0,
+               zorder=0, label="dip")
+    ax.axvline(dip.centre, color="tab:orange", lw=0.8, ls="--", zorder=0)
+
+
 def plot_contact_along_track(solutions: dict, wheel: int = 0, window: tuple[float, float] | None
-                             = None, samples: int = 4096, sleepers: bool = True) -> Figure:
+                             = None, samples: int = 4096, sleepers: bool = True,
+                             dip=None) -> Figure:
     """Contact force of wheel `wheel` against its position along the track, one line each.
 
     `window` (x_min, x_max) [m] limits the abscissa (default: one wagon length);
-    thin grey lines mark the sleepers.
+    thin grey vertical lines mark the sleepers; `dip` (a `CosineDip`) is shaded,
+    its lowest point dashed.
     """
     fig, ax = new_figure(1, 1, width=7.0, height=3.0)
     first = next(iter(solutions.values()))
@@ -39,8 +51,9 @@ def plot_contact_along_track(solutions: dict, wheel: int = 0, window: tuple[floa
     if sleepers:
         for xs in np.arange(np.ceil(lo / span), np.floor(hi / span) + 1) * span:
             ax.axvline(xs, color="0.8", lw=0.6, zorder=0)
+    _shade_dip(ax, dip)
     ax.set_xlim(lo, hi)
-    ax.set_xlabel("wheel position along the track x [m] (grey: sleepers)")
+    ax.set_xlabel("wheel position along the track x [m] (grey verticals: sleepers)")
     ax.set_ylabel("contact force P [kN]")
     ax.grid(True, axis="y", alpha=0.3)
     ax.legend(fontsize=8)
@@ -64,8 +77,12 @@ def plot_dip_against_speed(speeds: np.ndarray, curves: dict, static_load: float)
     return fig
 
 
-def plot_loss_of_contact(solution, window: tuple[float, float], samples: int = 16384) -> Figure:
-    """Contact force and compression of every wheel through `window` [m] of its path."""
+def plot_loss_of_contact(solution, window: tuple[float, float], samples: int = 16384,
+                         dip=None) -> Figure:
+    """Contact force and compression of every wheel through `window` [m] of its path.
+
+    `dip` (a `CosineDip`) is shaded on both panels, its lowest point dashed.
+    """
     fig, axes = new_figure(2, 1, width=7.0, height=4.2, sharex=True)
     wagon = float(solution.passage.wagon_length)
     t = solution.one_period(samples)
@@ -83,6 +100,8 @@ def plot_loss_of_contact(solution, window: tuple[float, float], samples: int = 1
     axes[1].set_xlabel("wheel position along the track x [m]")
     for ax in axes:
         ax.grid(True, alpha=0.3)
+        _shade_dip(ax, dip)
+    axes[1].set_xlim(*window)
     axes[0].legend(fontsize=8)
     return fig
 
