@@ -30,8 +30,8 @@ from .arguments import require_count, require_fraction
 from .auto_harmonics import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION
 from .cell_newton import solve_cell
 from .cell_solution import CellSolution
+from .diagnosis import report
 from .foundation_at_rest import check_foundation_at_rest
-from .solution import ConvergenceError, ConvergenceWarning, TruncationWarning
 from .truncation import auto_samples, grown_harmonics, predict_harmonics
 
 __all__ = ["cell_truncation", "solve_cell_auto", "solve_track_cell", "MAX_CELL_HARMONICS"]
@@ -170,15 +170,10 @@ def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton
         if result.converged:
             result = replace(result, truncation_error=cell_truncation(result)[0])
         limit = WARN_TRUNCATION
-    if not result.converged:
-        if strict:
-            raise ConvergenceError(result.message, result, [])
-        warnings.warn(result.message, ConvergenceWarning, stacklevel=3)
-    elif result.truncation_error > limit:
-        warnings.warn(f"harmonics={result.harmonics}: the estimated truncation error is "
-                      f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
-                      f"larger harmonics", TruncationWarning, stacklevel=3)
-    return result
+    return report(result, strict, limit,
+                  f"harmonics={result.harmonics}: the estimated truncation error is "
+                  f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
+                  f"larger harmonics")
 
 
 def _compare_with_track(track, cell) -> None:

@@ -4,17 +4,20 @@
 residual falls by less than 10 % a step) and diverging ones (only when the
 iteration as a whole diverges), and names those that carry the largest
 residual; `convergence_error` turns that into the `ConvergenceError` of
-``strict=True``.
+``strict=True``.  `report` raises or warns for the cell and wheel solvers,
+whose failures carry their own message.
 """
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
 from .fixed_point import SolverOutcome
-from .solution import ConvergenceError, Solution
+from .solution import ConvergenceError, ConvergenceWarning, Solution, TruncationWarning
 
-__all__ = ["diagnose", "convergence_error"]
+__all__ = ["diagnose", "convergence_error", "report"]
 
 
 def diagnose(outcome: SolverOutcome) -> tuple[list[int], list[int], list[int]]:
@@ -67,3 +70,20 @@ def _listed(harmonics: list[int], shown: int = 12) -> str:
     if len(harmonics) <= shown:
         return str(harmonics)
     return f"{str(harmonics[:shown])[:-1]}, ... ({len(harmonics)} in all)]"
+
+
+def report(result, strict: bool, limit: float, truncation: str):
+    """Return `result` after telling its caller what went wrong, as the caller asked.
+
+    A result that did not converge raises `ConvergenceError` with ``strict``
+    and warns `ConvergenceWarning` otherwise; a converged one whose
+    ``truncation_error`` exceeds `limit` warns `TruncationWarning` with the
+    text `truncation`.  The warnings point at the user's call to `railtrack.solve`.
+    """
+    if not result.converged:
+        if strict:
+            raise ConvergenceError(result.message, result, [])
+        warnings.warn(result.message, ConvergenceWarning, stacklevel=4)
+    elif result.truncation_error > limit:
+        warnings.warn(truncation, TruncationWarning, stacklevel=4)
+    return result

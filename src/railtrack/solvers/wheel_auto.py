@@ -15,7 +15,6 @@ load, and returns the finer one with that difference as
 
 from __future__ import annotations
 
-import warnings
 from dataclasses import replace
 
 import numpy as np
@@ -25,7 +24,7 @@ from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..model.profile import smooth_rail
 from .auto_harmonics import DEFAULT_ACCURACY
-from .solution import ConvergenceError, ConvergenceWarning, TruncationWarning
+from .diagnosis import report
 from .wheel_newton import solve_wheels
 from .wheel_solution import WheelSolution
 
@@ -106,15 +105,9 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail,
         result = _wrap(passage, wheel, profile, solve_wheels(passage, cell, wheel, profile,
                                                              int(harmonics), tol=tol))
         limit = np.inf
-    if not result.converged:
-        if strict:
-            raise ConvergenceError(result.message, result, [])
-        warnings.warn(result.message, ConvergenceWarning, stacklevel=3)
-    elif result.truncation_error > limit:
-        warnings.warn(f"harmonics={result.harmonics}: the contact force changed by "
-                      f"{result.truncation_error:.1%} of Q at the last refinement",
-                      TruncationWarning, stacklevel=3)
-    return result
+    return report(result, strict, limit,
+                  f"harmonics={result.harmonics}: the contact force changed by "
+                  f"{result.truncation_error:.1%} of Q at the last refinement")
 
 
 RAIL_FIELD_NOTE = (
