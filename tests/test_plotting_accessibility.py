@@ -297,6 +297,9 @@ FIGURES = {
     "wheels.plot_loss_of_contact": lambda: whl.plot_loss_of_contact(
         _wheels()["45 m/s"], (6.0, 7.8), samples=512,
         dip=rt.CosineDip(0.5e-3, 1.0, 18.0, centre=7.0)),
+    "wheels.plot_sleeper_passing": lambda: whl.plot_sleeper_passing(
+        {"a": (np.array([20.0, 40.0]), np.array([300.0, 900.0]), 35.0),
+         "b": (np.array([20.0, 40.0]), np.array([200.0, 400.0]), None)}),
     "wheels.plot_rail_receptances": lambda: whl.plot_rail_receptances(
         np.linspace(20.0, 2000.0, 50), {"a": np.linspace(1, 2, 50) * 1e-9,
                                         "b": np.linspace(2, 1, 50) * 1e-9}, {"mark": 1000.0}),

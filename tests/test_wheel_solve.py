@@ -4,8 +4,8 @@ Truths: today's constant-force solve (the limits m_w -> 0 and C_H -> infinity);
 the wheel's mean balance (mean P = Q exactly, with an infinitely soft primary
 suspension); finite differences of the residual (the structured Jacobian);
 the time-domain ring with the same wheels (8 elements a span, 120 steps per
-sleeper passage, within 0.05 % of a ring twice as fine: /work notes of the
-issue); and the refusals of inputs with no steady state.
+sleeper passage: 0.02 kN from a ring twice as fine, whose digits hold to 0.004 kN
+up to 64 elements and 960 steps); and the refusals of inputs with no steady state.
 """
 
 import numpy as np

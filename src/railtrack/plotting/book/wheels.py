@@ -12,7 +12,7 @@ from matplotlib.figure import Figure
 from ..style import new_figure, series_style
 
 __all__ = ["plot_contact_along_track", "plot_dip_against_speed", "plot_loss_of_contact",
-           "plot_rail_receptances"]
+           "plot_rail_receptances", "plot_sleeper_passing"]
 
 KN = 1e-3
 
@@ -118,5 +118,25 @@ def plot_rail_receptances(frequency: np.ndarray, receptances: dict,
     ax.set_xlabel("frequency [Hz]")
     ax.set_ylabel("|receptance| [m/N]")
     ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def plot_sleeper_passing(curves: dict) -> Figure:
+    """Swing of the contact force [N] against the sleeper-passing frequency v / L [Hz].
+
+    `curves` maps a label to ``(frequency, swing, resonance)``: arrays over the
+    speeds swept and the wheel-and-track frequency [Hz] of that case (a dotted
+    vertical line of the same colour), or None for none.
+    """
+    fig, ax = new_figure(1, 1, width=6.5, height=3.2)
+    for i, (label, (frequency, swing, resonance)) in enumerate(curves.items()):
+        style = series_style(i)
+        ax.plot(frequency, np.asarray(swing) * KN, label=label, **style)
+        if resonance is not None:
+            ax.axvline(resonance, color=style["color"], lw=0.8, ls=":")
+    ax.set_xlabel("sleeper-passing frequency v / L [Hz] (dotted: wheel and track, one mass)")
+    ax.set_ylabel("swing of P, max - min [kN]")
+    ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     return fig
