@@ -47,6 +47,11 @@ NB_TIMEOUT  := 300
 export PATH := $(CURDIR)/$(VENV)/bin:$(PATH)
 export JUPYTER_PREFER_ENV_PATH := 1
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
+# Matplotlib's font cache in the venv, not in ~/.cache: a cache written by
+# another clone's venv names that venv's fonts, and once that clone is gone
+# every figure warns on stderr ("findfont: ... not found"), which nbval reads
+# as a changed output.
+export MPLCONFIGDIR := $(CURDIR)/$(VENV)/matplotlib
 unexport VIRTUAL_ENV PYTHONPATH PYTHONHOME
 
 .PHONY: help venv book book-student pdf lab test test-roundoff bench clean distclean
