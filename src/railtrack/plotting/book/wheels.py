@@ -42,8 +42,7 @@ def plot_contact_along_track(solutions: dict, wheel: int = 0, window: tuple[floa
     lo, hi = (0.0, wagon) if window is None else window
     for i, (label, solution) in enumerate(solutions.items()):
         t = solution.one_period(samples)
-        x = np.mod(float(solution.passage.speed) * t
-                   - float(solution.passage.axle_positions[wheel]), wagon)
+        x = np.mod(solution.wheel_position(t)[wheel], wagon)
         order = np.argsort(x)
         force = solution.contact_force(t)[wheel][order] * KN
         keep = (x[order] >= lo) & (x[order] <= hi)
@@ -87,8 +86,7 @@ def plot_loss_of_contact(solution, window: tuple[float, float], samples: int = 1
     wagon = float(solution.passage.wagon_length)
     t = solution.one_period(samples)
     force, compression = solution.contact_force(t) * KN, solution.compression(t) * 1e6
-    for k, d in enumerate(np.asarray(solution.passage.axle_positions, dtype=float)):
-        x = np.mod(float(solution.passage.speed) * t - d, wagon)
+    for k, x in enumerate(np.mod(solution.wheel_position(t), wagon)):
         order = np.argsort(x)
         keep = (x[order] >= window[0]) & (x[order] <= window[1])
         style = series_style(k)
