@@ -23,7 +23,7 @@ mean height relative to the rail under it, y_k (below).
   the rail under the wheel u_k from the sleepers' reactions R = -p,
   ``sum_n sum_j' R_{j',n} e^{i kappa (d_k + x_j')} / (EI Lambda (kappa^4 - k_n^4))``,
   kappa = omega_n/v + 2 pi r/Lambda at wheel harmonic p = -r G, and from the
-  wheels, ``sum_k' D_p(d_k' - d_k) (-P_{k',p})``
+  wheels, ``sum_k' U_p(d_k' - d_k) (-P_{k',p})``
   (`railtrack.equations.wheel_train_receptance`), and the wheel
   ``z_p = -P_p / (m_w omega_p^2)``.  The mean p = 0 of the rail under the
   wheel contains the rail's rigid lift, infinite in each part and finite in
@@ -66,7 +66,7 @@ class WheelSystem(NamedTuple):
     under_wheel: np.ndarray    # (lmax, 2m+1, K): e^{i kappa d_k} / (EI Lambda (kappa^4 - k_n^4))
     sleeper_phase: np.ndarray  # (2m+1, N): e^{i omega_n x_j / v}
     mode_of_wheel: np.ndarray  # (lmax,): r_l = p_l / G mod N
-    between_wheels: np.ndarray  # (lmax, K, K): D_p(d_k' - d_k)
+    between_wheels: np.ndarray  # (lmax, K, K): U_p(d_k' - d_k)
     wheel_mobility: np.ndarray  # (lmax,): -1/(m_w omega_p^2)
     samples: int
     sleeper_weight: np.ndarray  # (N,) [N], M_j g

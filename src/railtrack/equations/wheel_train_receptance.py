@@ -1,31 +1,31 @@
-"""The free rail under a train of wheels whose forces vary in time (issue 20, first block).
+"""The free rail under a train of wheels whose forces vary in time: eq. (13.2) of the book.
 
 A wheel at x = vt - d in every wagon (period H along the track) pushes the
 rail up with a force whose harmonic p is ``e^{i omega_p t}`` (omega_p = p 2 pi v/H).
 The free rail (no sleepers: their forces are added separately, as in eq. 6)
 answers, in the frame of the train, with the wavenumbers kappa_r = 2 pi r / H
-of the wagon pattern.  For EI u'''' + rho S u'' = f and the moving
+of the wagon pattern (the book's gamma_mu).  For EI u'''' + rho S u'' = f and the moving
 pattern ``e^{i omega_p t} e^{i kappa_r (x - vt)}``,
 
-    u(x, t) = e^{i omega_p t} (1/H) sum_r e^{i kappa_r (x - vt + d)} / P_p(kappa_r),
-    P_p(kappa) = EI kappa^4 - rho S (omega_p - kappa v)^2,
+    u(x, t) = e^{i omega_p t} (1/H) sum_r e^{i kappa_r (x - vt + d)} / Pi_p(kappa_r),
+    Pi_p(kappa) = EI kappa^4 - rho S (omega_p - kappa v)^2,
 
 (kappa v - omega_p is the frequency a point of the rail sees).  Two readings
 of it are needed:
 
 * at another wheel of the train, x - vt = -d', the rail moves at the same
-  frequency omega_p with ``D_p(Delta) = (1/H) sum_r e^{i kappa_r Delta} / P_p(kappa_r)``,
+  frequency omega_p with ``U_p(Delta) = (1/H) sum_r e^{i kappa_r Delta} / Pi_p(kappa_r)``,
   Delta = d - d' (mod H): `wheel_train_receptance`;
 * at a fixed point x = 0 (above sleeper 0) it moves at omega_p - kappa_r v
   = omega_{p-r}: harmonic n of the rail there takes r = p - n,
   ``(1/H) e^{i kappa_{p-n} d} / (EI kappa_{p-n}^4 - rho S omega_n^2)`` per unit force
   (for p = 0 the paper's moving-load term of eq. 6, up to the sign of the force).
 
-With the four roots a_i of P_p and Fourier's series of e^{ibx} on (0, 2 pi),
+With the four roots a_i of Pi_p and Fourier's series of e^{ibx} on (0, 2 pi),
 ``sum_r e^{i kappa_r Delta} / (kappa_r - a) = -i H e^{i a Delta} / (e^{i a H} - 1)``
 for 0 <= Delta < H, so that
 
-    D_p(Delta) = sum_i -i e^{i a_i Delta} / (P_p'(a_i) (e^{i a_i H} - 1)),
+    U_p(Delta) = sum_i -i e^{i a_i Delta} / (Pi_p'(a_i) (e^{i a_i H} - 1)),
 
 evaluated without overflow for any Im a_i.  D is infinite where a root is
 real and a multiple of 2 pi / H (a free wave of the rail that fits the
@@ -53,7 +53,7 @@ def _roots(passage: Passage, omega: float) -> np.ndarray:
 
 def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
                            order: int = 0) -> np.ndarray:
-    """D_p(Delta) of the module docstring [m/N]: the free rail a distance Delta ahead of a wheel.
+    """U_p(Delta) of the module docstring [m/N]: the free rail a distance Delta ahead of a wheel.
 
     Parameters
     ----------
@@ -65,7 +65,7 @@ def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
         Delta = d - d' [m], how far the point read (x = vt - d') is ahead of
         the loaded wheel (x = vt - d), taken modulo H.
     order : int
-        0 for D_p, 2 for its second derivative in Delta (the rail's curvature,
+        0 for U_p, 2 for its second derivative in Delta (the rail's curvature,
         continuous across the wheel) [1/(N m)].
 
     Returns
@@ -103,7 +103,7 @@ def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
 
 def wheel_train_receptance_lattice_sum(passage: Passage, omega: float, offset: ArrayLike,
                                        terms: int = 200_000) -> np.ndarray:
-    """D_p(Delta) by its sum over the wagon pattern's wavenumbers, |r| <= terms [m/N].
+    """U_p(Delta) by its sum over the wagon pattern's wavenumbers, |r| <= terms [m/N].
 
     The independent check of `wheel_train_receptance`; the neglected tail falls
     like terms^-3 relative to the sum.
