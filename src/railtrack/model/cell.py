@@ -35,7 +35,10 @@ def sleeper_array(name: str, value, unit: str) -> np.ndarray:
 
 def cell_size(sleepers) -> int:
     """N, the sleepers of a cell, as an int >= 1, or a ValueError."""
-    if isinstance(sleepers, bool) or int(sleepers) != sleepers or sleepers < 1:
+    # Whole floats (3.0) pass, as before; NaN, strings and None are named, not int()'s error.
+    whole = isinstance(sleepers, (int, np.integer)) or (
+        isinstance(sleepers, (float, np.floating)) and float(sleepers).is_integer())
+    if isinstance(sleepers, bool) or not whole or sleepers < 1:
         raise ValueError(f"sleepers must be an integer >= 1; got {sleepers!r}")
     return int(sleepers)
 

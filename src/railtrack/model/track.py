@@ -11,16 +11,30 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-__all__ = ["Track", "require_positive", "require_non_negative", "as_float64"]
+__all__ = ["Track", "require_positive", "require_non_negative", "require_finite", "as_float64"]
+
+
+def _holds_boolean(value) -> bool:
+    """True if `value` is a boolean or a (nested) list or tuple holding one.
+
+    NumPy turns ``[100, True]`` into the integers ``[100, 1]``: the boolean
+    must be looked for before the conversion.
+    """
+    if isinstance(value, (bool, np.bool_)):
+        return True
+    return isinstance(value, (list, tuple)) and any(_holds_boolean(v) for v in value)
 
 
 def _as_real(name: str, value: ArrayLike, unit: str) -> np.ndarray:
     """`value` as float64, or a ``TypeError`` naming `name` if it is not a real number."""
     array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
+    boolean = _holds_boolean(value)
+    if array.dtype.kind not in "iuf" or boolean:
         kind = {"b": "a boolean", "c": "a complex number", "U": "a string", "S": "a string"}.get(
             array.dtype.kind, f"of type {type(value).__name__}"
         )
+        if boolean and array.dtype.kind != "b":
+            kind = "which holds a boolean (True is no number here)"
         raise TypeError(
             f"{name} must be a real number{' in ' + unit if unit else ''}; got {value!r}, {kind}"
         )
@@ -46,6 +60,14 @@ def require_non_negative(name: str, value: ArrayLike, unit: str = "") -> None:
     if not np.all(np.isfinite(array)) or not np.all(array >= 0):
         raise ValueError(
             f"{name} must be a finite number >= 0{' ' + unit if unit else ''}; got {value!r}"
+        )
+
+
+def require_finite(name: str, value: ArrayLike, unit: str = "") -> None:
+    """Raise unless every element of `value` is a finite real number (see `require_positive`)."""
+    if not np.all(np.isfinite(_as_real(name, value, unit))):
+        raise ValueError(
+            f"{name} must be a finite number{' in ' + unit if unit else ''}; got {value!r}"
         )
 
 
