@@ -199,3 +199,26 @@ def test_a_dip_refuses_a_centre_that_is_no_position(bad, error):
 def test_other_model_fields_refuse_booleans_in_sequences(make):
     with pytest.raises(TypeError, match="boolean"):
         make()
+
+
+def test_a_cells_changed_sleeper_refuses_a_boolean():
+    cell = rt.SleeperCell.identical(rt.Passage.paper(), LAW, 3)
+    with pytest.raises(TypeError, match="sleeper_mass must be a real number; got True"):
+        cell.with_sleeper(1, sleeper_mass=True)
+
+
+def test_a_cell_names_foundations_that_are_no_sequence():
+    with pytest.raises(TypeError, match="foundations must be a list or tuple of laws"):
+        rt.SleeperCell([100.0], [220e6], [1e6], LAW)
+
+
+@pytest.mark.parametrize("index, bad", [(0, 0.0), (1, True), (3, np.nan), (2, -1.0)])
+def test_the_ballast_reduction_names_a_bad_layer(index, bad):
+    from railtrack.model.ballast import single_layer
+
+    names = ["ballast_mass", "ballast_stiffness", "ballast_damping", "subgrade_stiffness",
+             "subgrade_damping"]
+    values = [500.0, 180e6, 60e3, 65e6, 30e3]
+    values[index] = bad
+    with pytest.raises((TypeError, ValueError), match=rf"{names[index]} must be"):
+        single_layer(*values)

@@ -13,7 +13,7 @@ import numpy as np
 
 from .foundations import as_foundation
 from .passage import Passage
-from .track import require_non_negative, require_positive
+from .validation import require_non_negative, require_positive
 
 __all__ = ["SleeperCell", "sleeper_array", "cell_size"]
 
@@ -83,6 +83,9 @@ class SleeperCell:
         for name, unit in (("sleeper_mass", "kg"), ("pad_stiffness", "N/m"),
                            ("pad_damping", "N s/m")):
             object.__setattr__(self, name, sleeper_array(name, getattr(self, name), unit))
+        if not isinstance(self.foundations, (list, tuple)):
+            raise TypeError(f"foundations must be a list or tuple of laws, one per sleeper; "
+                            f"got {type(self.foundations).__name__}")
         object.__setattr__(self, "foundations", tuple(as_foundation(f) for f in self.foundations))
         lengths = {f.name: len(getattr(self, f.name)) for f in fields(self)
                    if f.name != "gravity"}
@@ -121,6 +124,8 @@ class SleeperCell:
                              f"sleepers (0 to {self.sleepers - 1})")
         values = {name: getattr(self, name).copy() for name in known}
         for name, value in changes.items():
+            # Checked before it enters the float array, where True would become 1.0.
+            (require_non_negative if "damping" in name else require_positive)(name, value)
             values[name][index] = value
         laws = list(self.foundations)
         if foundation is not None:

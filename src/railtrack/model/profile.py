@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .track import as_float64, require_finite, require_non_negative, require_positive
+from .validation import as_float64, require_finite, require_non_negative, require_positive
 
 __all__ = ["CosineDip", "smooth_rail"]
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .track import as_float64, require_non_negative, require_positive
+from .validation import as_float64, require_non_negative, require_positive
 
 __all__ = ["Train", "STANDARD_GRAVITY", "SINGLE_AXLE_LENGTH", "MAX_SPEED"]
 
