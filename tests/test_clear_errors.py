@@ -63,6 +63,14 @@ def test_random_support_names_a_bad_count(name, bad):
         rt.random_support(TRACK, rt.Train.paper(), LAW, sleepers=3, **{name: bad})
 
 
+@pytest.mark.parametrize("name, bad, error", [("variation", True, TypeError),
+                                              ("variation", "0.3", TypeError),
+                                              ("sleepers", 2.5, ValueError)])
+def test_random_support_names_a_bad_cell_or_scatter(name, bad, error):
+    with pytest.raises(error, match=rf"{name} must be .*got {bad!r}"):
+        rt.random_support(TRACK, rt.Train.paper(), LAW, draws=1, **{"sleepers": 3, name: bad})
+
+
 def test_quantiles_without_a_converged_draw_say_so():
     nan = np.full(2, np.nan)
     sample = RandomSupport(0.3, np.ones((2, 3)), nan, nan, np.zeros(2, bool), np.full(2, 40))

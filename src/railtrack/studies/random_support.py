@@ -24,9 +24,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model.cell import SleeperCell
+from ..model.cell import SleeperCell, cell_size
 from ..model.foundations import as_foundation
 from ..model.passage import Passage
+from ..model.validation import require_non_negative
 from ..solvers.arguments import require_count
 from ..solvers.cell_auto import solve_track_cell
 
@@ -149,9 +150,11 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
     ((3,), True)
     """
     draws, seed = require_count("draws", draws, 1), require_count("seed", seed, 0)
+    sleepers = cell_size(sleepers)
+    require_non_negative("variation", variation)     # True is no coefficient of variation
     passage = Passage(track, train)
     rng = np.random.default_rng(seed)
-    factors = lognormal_factors(variation, (draws, int(sleepers)), rng)
+    factors = lognormal_factors(variation, (draws, sleepers), rng)
     base = SleeperCell.identical(passage, foundation, sleepers)
     seat, moment = np.full(draws, np.nan), np.full(draws, np.nan)
     converged, used = np.zeros(draws, bool), np.zeros(draws, int)
