@@ -40,7 +40,7 @@ class CosineDip:
         > 0 [m], the distance between dips (for a steady state, a whole
         number of sleeper spacings, e.g. the wagon length).
     centre : float
-        [m], position of one dip's lowest point.
+        [m], position of one dip's lowest point (finite).
 
     Examples
     --------

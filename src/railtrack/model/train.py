@@ -51,8 +51,9 @@ class Train:
         Load Q_j of each axle's wheel on the modelled rail [N] (half the
         axle load); loads push the rail down.
     speed : float
-        Train speed v [m/s], towards +x.  May be an array of shape ``(..., 1)``
-        for a batch (`railtrack.sweep_speeds`).
+        Train speed v [m/s], towards +x, > 0 and at most `MAX_SPEED`
+        (1.34e154 m/s, where v^2 overflows).  May be an array of shape
+        ``(..., 1)`` for a batch (`railtrack.sweep_speeds`).
 
     Examples
     --------
