@@ -23,6 +23,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .validation import require_non_negative, require_positive
+
 __all__ = ["SingleLayer", "single_layer", "two_layer_stiffness", "ZHAI_2004"]
 
 ZHAI_2004 = dict(
@@ -81,6 +83,12 @@ def single_layer(ballast_mass: float, ballast_stiffness: float, ballast_damping:
     >>> round(layer.stiffness / 1e6, 2), round(layer.damping / 1e3, 1), round(layer.added_mass, 1)
     (49.6, 20.4, 217.6)
     """
+    for name, value, unit in (("ballast_mass", ballast_mass, "kg"),
+                              ("ballast_stiffness", ballast_stiffness, "N/m"),
+                              ("subgrade_stiffness", subgrade_stiffness, "N/m")):
+        require_positive(name, value, unit)
+    require_non_negative("ballast_damping", ballast_damping, "N s/m")
+    require_non_negative("subgrade_damping", subgrade_damping, "N s/m")
     k_b, k_f = ballast_stiffness, subgrade_stiffness
     stiffness = k_b * k_f / (k_b + k_f)
     damping = stiffness**2 * (ballast_damping / k_b**2 + subgrade_damping / k_f**2)

@@ -13,7 +13,7 @@ import numpy as np
 
 from .foundations import as_foundation
 from .passage import Passage
-from .track import require_non_negative, require_positive
+from .validation import require_non_negative, require_positive
 
 __all__ = ["SleeperCell", "sleeper_array", "cell_size"]
 
@@ -35,7 +35,10 @@ def sleeper_array(name: str, value, unit: str) -> np.ndarray:
 
 def cell_size(sleepers) -> int:
     """N, the sleepers of a cell, as an int >= 1, or a ValueError."""
-    if isinstance(sleepers, bool) or int(sleepers) != sleepers or sleepers < 1:
+    # Whole floats (3.0) pass, as before; NaN, strings and None are named, not int()'s error.
+    whole = isinstance(sleepers, (int, np.integer)) or (
+        isinstance(sleepers, (float, np.floating)) and float(sleepers).is_integer())
+    if isinstance(sleepers, bool) or not whole or sleepers < 1:
         raise ValueError(f"sleepers must be an integer >= 1; got {sleepers!r}")
     return int(sleepers)
 
@@ -80,6 +83,9 @@ class SleeperCell:
         for name, unit in (("sleeper_mass", "kg"), ("pad_stiffness", "N/m"),
                            ("pad_damping", "N s/m")):
             object.__setattr__(self, name, sleeper_array(name, getattr(self, name), unit))
+        if not isinstance(self.foundations, (list, tuple)):
+            raise TypeError(f"foundations must be a list or tuple of laws, one per sleeper; "
+                            f"got {type(self.foundations).__name__}")
         object.__setattr__(self, "foundations", tuple(as_foundation(f) for f in self.foundations))
         lengths = {f.name: len(getattr(self, f.name)) for f in fields(self)
                    if f.name != "gravity"}
@@ -118,6 +124,8 @@ class SleeperCell:
                              f"sleepers (0 to {self.sleepers - 1})")
         values = {name: getattr(self, name).copy() for name in known}
         for name, value in changes.items():
+            # Checked before it enters the float array, where True would become 1.0.
+            (require_non_negative if "damping" in name else require_positive)(name, value)
             values[name][index] = value
         laws = list(self.foundations)
         if foundation is not None:

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .track import as_float64, require_non_negative, require_positive
+from .validation import as_float64, require_finite, require_non_negative, require_positive
 
 __all__ = ["CosineDip", "smooth_rail"]
 
@@ -40,7 +40,7 @@ class CosineDip:
         > 0 [m], the distance between dips (for a steady state, a whole
         number of sleeper spacings, e.g. the wagon length).
     centre : float
-        [m], position of one dip's lowest point.
+        [m], position of one dip's lowest point (finite).
 
     Examples
     --------
@@ -58,6 +58,7 @@ class CosineDip:
         require_non_negative("depth", self.depth, "m")
         require_positive("length", self.length, "m")
         require_positive("period", self.period, "m")
+        require_finite("centre", self.centre, "m")
         if self.length >= self.period:
             raise ValueError(f"a dip's length ({self.length} m) must be shorter than its "
                              f"period ({self.period} m)")

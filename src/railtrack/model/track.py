@@ -8,59 +8,9 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-import numpy as np
-from numpy.typing import ArrayLike
+from .validation import as_float64, require_finite, require_non_negative, require_positive
 
-__all__ = ["Track", "require_positive", "require_non_negative", "as_float64"]
-
-
-def _as_real(name: str, value: ArrayLike, unit: str) -> np.ndarray:
-    """`value` as float64, or a ``TypeError`` naming `name` if it is not a real number."""
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        kind = {"b": "a boolean", "c": "a complex number", "U": "a string", "S": "a string"}.get(
-            array.dtype.kind, f"of type {type(value).__name__}"
-        )
-        raise TypeError(
-            f"{name} must be a real number{' in ' + unit if unit else ''}; got {value!r}, {kind}"
-        )
-    return array.astype(np.float64)
-
-
-def require_positive(name: str, value: ArrayLike, unit: str = "") -> None:
-    """Raise unless every element of `value` is a finite real number > 0.
-
-    ``TypeError`` for booleans, complex numbers, strings and other non-real
-    values; ``ValueError`` for values that are not finite or not > 0.
-    """
-    array = _as_real(name, value, unit)
-    if not np.all(np.isfinite(array)) or not np.all(array > 0):
-        raise ValueError(
-            f"{name} must be a finite number > 0{' ' + unit if unit else ''}; got {value!r}"
-        )
-
-
-def require_non_negative(name: str, value: ArrayLike, unit: str = "") -> None:
-    """Raise unless every element of `value` is a finite real number >= 0 (see `require_positive`)."""
-    array = _as_real(name, value, unit)
-    if not np.all(np.isfinite(array)) or not np.all(array >= 0):
-        raise ValueError(
-            f"{name} must be a finite number >= 0{' ' + unit if unit else ''}; got {value!r}"
-        )
-
-
-def as_float64(instance) -> None:
-    """Store every field of a frozen dataclass as float64 (a float, or an array for batches).
-
-    Single precision or integer input would otherwise leak into the sums of
-    eq. (3), which lose digits in float32.
-    """
-    for field in dataclasses.fields(instance):
-        value = getattr(instance, field.name)
-        if not isinstance(value, (int, float, np.number, np.ndarray)) or isinstance(value, bool):
-            continue
-        array = np.asarray(value, dtype=np.float64)
-        object.__setattr__(instance, field.name, float(array) if array.ndim == 0 else array)
+__all__ = ["Track", "require_positive", "require_non_negative", "require_finite", "as_float64"]
 
 
 @dataclass(frozen=True)

@@ -15,15 +15,18 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .track import as_float64, require_positive
+from .validation import as_float64, require_non_negative, require_positive
 
-__all__ = ["Train", "STANDARD_GRAVITY", "SINGLE_AXLE_LENGTH"]
+__all__ = ["Train", "STANDARD_GRAVITY", "SINGLE_AXLE_LENGTH", "MAX_SPEED"]
 
 STANDARD_GRAVITY = 9.81
 """g [m/s^2], to turn the masses of the vehicle presets into loads."""
 
 SINGLE_AXLE_LENGTH = 60.0
 """Default wagon length of `Train.single_axle` [m]."""
+
+MAX_SPEED = float(np.sqrt(np.finfo(np.float64).max))
+"""1.34e154 m/s: above it v^2, which eq. (3) needs, overflows double precision [m/s]."""
 
 
 def _as_tuple(name: str, values) -> tuple[float, ...]:
@@ -48,8 +51,9 @@ class Train:
         Load Q_j of each axle's wheel on the modelled rail [N] (half the
         axle load); loads push the rail down.
     speed : float
-        Train speed v [m/s], towards +x.  May be an array of shape ``(..., 1)``
-        for a batch (`railtrack.sweep_speeds`).
+        Train speed v [m/s], towards +x, > 0 and at most `MAX_SPEED`
+        (1.34e154 m/s, where v^2 overflows).  May be an array of shape
+        ``(..., 1)`` for a batch (`railtrack.sweep_speeds`).
 
     Examples
     --------
@@ -68,11 +72,18 @@ class Train:
     speed: float
 
     def __post_init__(self) -> None:
+        require_non_negative("axle_positions", self.axle_positions, "m")
+        require_positive("axle_loads", self.axle_loads, "N")
         object.__setattr__(self, "axle_positions", _as_tuple("axle_positions", self.axle_positions))
         object.__setattr__(self, "axle_loads", _as_tuple("axle_loads", self.axle_loads))
+        if not self.axle_positions:
+            raise ValueError(f"axle_positions must list at least one axle (0.0 for the first); "
+                             f"got {self.axle_positions!r}")
         require_positive("wagon_length", self.wagon_length, "m")
         require_positive("speed", self.speed, "m/s")
-        require_positive("axle_loads", self.axle_loads, "N")
+        if np.any(np.asarray(self.speed, dtype=float) > MAX_SPEED):
+            raise ValueError(f"speed must be at most {MAX_SPEED:.3g} m/s, above which v^2 "
+                             f"overflows double precision; got {self.speed!r} m/s")
         positions, length = np.array(self.axle_positions), np.asarray(self.wagon_length)
         if len(positions) != len(self.axle_loads):
             raise ValueError(

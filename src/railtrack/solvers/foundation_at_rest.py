@@ -88,12 +88,17 @@ def check_foundation_at_rest(foundation: Foundation, pad_stiffness: float, pad_d
     Raises
     ------
     ValueError
-        Naming the negative stiffness or damping, and how to proceed.
+        Naming the negative stiffness or damping, and how to proceed; or
+        saying that the stiffness or damping at rest is not finite.
     """
     stiffness, damping = foundation.linearization()
-    problems = []
     if not (np.isfinite(stiffness) and np.isfinite(damping)):
-        problems.append(f"its linearisation at rest is not finite (k = {stiffness!r}, eta = {damping!r})")
+        raise ValueError(
+            f"the foundation law's linearisation at rest is not finite: df/dw = {stiffness:.4g} "
+            f"N/m, df/dw' = {damping:.4g} N s/m at w = w' = 0.  The law must give finite "
+            "forces and slopes near rest: look for a division by w, a root or a log of w, "
+            "or an overflow")
+    problems = []
     if stiffness < -1e-9 * pad_stiffness:
         problems.append(f"negative stiffness at rest, df/dw = {stiffness:.4g} N/m")
     if damping < -1e-9 * max(pad_damping, 1.0):

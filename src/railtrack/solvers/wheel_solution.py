@@ -20,6 +20,7 @@ from numpy.typing import ArrayLike
 from ..equations.moment import kink_sum
 from ..equations.wheel_train_receptance import wheel_train_receptance
 from ..model.passage import Passage
+from .arguments import require_count
 from .cell_solution import CellSolution
 
 __all__ = ["WheelSolution"]
@@ -208,8 +209,9 @@ class WheelSolution:
 
         Positions are the wheel's distance from sleeper 0 along the track,
         within one wagon length (0 <= x < H); ``dynamic_factor`` is max P / Q.
+        `samples` >= 1 times over the period.
         """
-        t = self.one_period(samples)
+        t = self.one_period(require_count("samples", samples, 1))
         force = self.contact_force(t)
         where = np.mod(self.wheel_position(t), float(self.passage.wagon_length))
         rows = np.arange(force.shape[0])

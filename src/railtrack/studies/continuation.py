@@ -32,6 +32,7 @@ from .branch import (TRACK_FIELDS, TRAIN_FIELDS, Branch, Fold, check_parameter,
                      hermite_turning_value, replaced, scalar)
 from ..equations.harmonic_balance import from_real, harmonic_system, to_real
 from ..solvers.newton import iterate_newton
+from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..solvers.solution import ConvergenceWarning, TruncationWarning
 from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION, solve
@@ -145,6 +146,8 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
     ValueError
         Unknown or non-scalar parameter, start or stop not real scalars,
         start == stop, bad harmonics, tol or step.
+    TypeError
+        A `railtrack.SleeperCell` as foundation (the message names the alternatives).
 
     Examples
     --------
@@ -154,6 +157,12 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
     >>> bool(branch.converged.all()), float(branch.values[-1]), len(branch.folds)
     (True, 1.0, 0)
     """
+    if isinstance(foundation, SleeperCell):
+        raise TypeError(
+            f"continuation follows one law under every sleeper; foundation is a SleeperCell of "
+            f"{foundation.sleepers} sleepers.  Solve the cell at each value instead, "
+            "rt.solve(track, train.replace(speed=v), cell); if its sleepers are all alike, pass "
+            "their one law, cell.foundations[0], to continuation or rt.sweep")
     if not isinstance(parameter, str):
         raise ValueError(f"parameter must be the name of a field; got {parameter!r}")
     check_parameter(track, train, foundation, parameter)

@@ -12,7 +12,7 @@ bouncing together,
 `p2_force` evaluates it; `dip_angle` gives 2 alpha of the project's
 `railtrack.model.profile.CosineDip`; `equivalent_track` fits (m_t, k_t, c_t)
 to a `railtrack.Track`'s own point receptance above a sleeper
-(`point_receptance`, the Floquet–Bloch integral of eq. (3)).
+(`railtrack.studies.point_receptance`, the Floquet–Bloch integral of eq. (3)).
 
 Sources.  The formula is the one stated in issue 20; no copy of Jenkins et
 al. (1974) [1]_, nor of a text quoting it, could be read for this module.  The
@@ -38,9 +38,9 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.optimize import brentq
 
-from ..equations.hill import complex_receptance
 from ..model.profile import CosineDip
 from ..model.track import as_float64, require_non_negative, require_positive
+from .point_receptance import one_law, point_receptance
 
 __all__ = ["EquivalentTrack", "p2_force", "dip_angle", "point_receptance", "fit_equivalent_track",
            "equivalent_track"]
@@ -165,77 +165,6 @@ def dip_angle(dip: CosineDip) -> float:
     return 2.0 * np.pi * dip.depth / dip.length
 
 
-def _support_stiffness(track, foundation, omega: np.ndarray) -> np.ndarray:
-    """Pad in series with the sleeper mass on the foundation: force on the rail per rail w [N/m]."""
-    k2, c2 = foundation.linearization()
-    pad = track.pad_stiffness + 1j * omega * track.pad_damping
-    below = k2 + 1j * omega * c2 - track.sleeper_mass * omega**2
-    return pad * below / (pad + below)
-
-
-def point_receptance(track, foundation, omega: ArrayLike, *, phases: int = 1024,
-                     max_phases: int = 2**16, rtol: float = 1e-8) -> np.ndarray:
-    """Receptance of the rail above a sleeper to a fixed harmonic force there [m/N].
-
-    The force F e^{i omega t} on one rail seat is the Bloch integral of forces
-    F e^{-i n theta} on all of them, each answered by eq. (3) at phase theta
-    (`railtrack.equations.hill.complex_receptance`) and the support stiffness
-    K (pad in series with the sleeper on the foundation):
-
-        alpha(omega) = (1 / 2 pi) int_{-pi}^{pi} eta / (1 + K eta) d theta.
-
-    The integrand is smooth and 2 pi periodic: the rectangle rule converges
-    geometrically.  Its points sit a quarter step off theta = 0, so that the
-    even and the odd ones are two rules the symmetry in theta does not make
-    equal; `phases` doubles until they agree to `rtol`.
-
-    Parameters
-    ----------
-    track : Track or Passage
-        Rail, pads and sleepers (the speed plays no part).
-    foundation : LinearFoundation
-        Or any law, through its ``linearization()`` (k2, eta2).
-    omega : array_like
-        Angular frequency >= 0 [rad/s].
-
-    Returns
-    -------
-    ndarray
-        Complex alpha, the shape of `omega`, positive along the force.
-
-    Raises
-    ------
-    ValueError
-        If no rule up to `max_phases` converges: an (almost) undamped track
-        whose free waves put poles on the path of integration.
-
-    Examples
-    --------
-    >>> from railtrack import Track, LinearFoundation
-    >>> round(1e-6 / float(point_receptance(Track.paper(), LinearFoundation.paper(), 0).real), 2)
-    58.32
-    """
-    omega = np.asarray(omega, dtype=float)
-    require_non_negative("omega", omega, "rad/s")
-    w = omega[..., None]
-    support = _support_stiffness(track, foundation, w)
-    while True:
-        theta = -np.pi + 2.0 * np.pi * (np.arange(phases) + 0.25) / phases
-        with np.errstate(divide="ignore", invalid="ignore"):
-            eta = complex_receptance(track, 1j * w, theta)
-            g = np.where(np.isfinite(eta), eta / (1.0 + support * eta), 1.0 / support)
-        even, odd = g[..., ::2].mean(axis=-1), g[..., 1::2].mean(axis=-1)
-        gap = np.abs(even - odd) / np.abs(even + odd) * 2.0
-        if np.all(np.isfinite(gap)) and np.all(gap <= rtol):
-            return 0.5 * (even + odd)
-        if 2 * phases > max_phases:
-            worst = np.ravel(omega)[np.argmax(np.where(np.isfinite(gap), gap, np.inf))]
-            raise ValueError(f"the Bloch integral of the point receptance has not converged at "
-                             f"omega = {worst:.4g} rad/s with {phases} phases: give the pads "
-                             "or the foundation some damping")
-        phases *= 2
-
-
 def fit_equivalent_track(receptance: Callable[[np.ndarray], np.ndarray],
                          omega_max: float = 2 * np.pi * 1000.0,
                          step: float = 2 * np.pi * 2.0) -> EquivalentTrack:
@@ -284,7 +213,9 @@ def equivalent_track(passage, foundation, omega_max: float = 2 * np.pi * 1000.0)
     """The equivalent track of a `railtrack.Track` on `foundation`, per wheel.
 
     `fit_equivalent_track` of `point_receptance` above a sleeper; `passage`
-    may be a Passage or a Track, `foundation` any law (its linearization).
+    may be a Passage or a Track, `foundation` any law or callable ``f(w, v)``
+    (its linearization at rest); a TypeError names anything else, a
+    `railtrack.SleeperCell` included (pass one of its laws).
 
     Examples
     --------
@@ -293,4 +224,5 @@ def equivalent_track(passage, foundation, omega_max: float = 2 * np.pi * 1000.0)
     >>> round(t.mass, 1), round(t.stiffness / 1e6, 2), round(t.damping / 1e3, 1)
     (49.7, 58.32, 339.6)
     """
-    return fit_equivalent_track(lambda w: point_receptance(passage, foundation, w), omega_max)
+    law = one_law(passage, foundation)
+    return fit_equivalent_track(lambda w: point_receptance(passage, law, w), omega_max)

@@ -24,9 +24,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model.cell import SleeperCell
+from ..model.cell import SleeperCell, cell_size
 from ..model.foundations import as_foundation
 from ..model.passage import Passage
+from ..model.validation import require_non_negative
+from ..solvers.arguments import require_count
 from ..solvers.cell_auto import solve_track_cell
 
 __all__ = ["RandomSupport", "random_support", "scaled_law", "lognormal_factors"]
@@ -90,8 +92,14 @@ class RandomSupport:
     harmonics: np.ndarray
 
     def quantiles(self, q=(0.5, 0.95, 0.99)) -> dict[str, np.ndarray]:
-        """Quantiles of the peak seat load [N] and moment [N m] over the converged draws."""
+        """Quantiles of the peak seat load [N] and moment [N m] over the converged draws.
+
+        A ValueError if no draw converged.
+        """
         ok = self.converged
+        if not ok.any():
+            raise ValueError(f"none of the {ok.size} draws converged, so there is no quantile "
+                             "to give; see .converged and .harmonics, and try more harmonics")
         return {"peak_seat_load": np.quantile(self.peak_seat_load[ok], q),
                 "peak_moment": np.quantile(self.peak_moment[ok], q)}
 
@@ -123,9 +131,9 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
     variation : float
         Coefficient of variation of each sleeper's stiffness factor [-].
     draws : int
-        Number of cells drawn.
+        Number of cells drawn, >= 1.
     seed : int
-        For ``numpy.random.default_rng``.
+        For ``numpy.random.default_rng``, >= 0.
     harmonics : int or "auto"
         As `railtrack.solve`.
 
@@ -141,9 +149,12 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
     >>> sample.peak_seat_load.shape, bool(sample.converged.all())
     ((3,), True)
     """
+    draws, seed = require_count("draws", draws, 1), require_count("seed", seed, 0)
+    sleepers = cell_size(sleepers)
+    require_non_negative("variation", variation)     # True is no coefficient of variation
     passage = Passage(track, train)
     rng = np.random.default_rng(seed)
-    factors = lognormal_factors(variation, (int(draws), int(sleepers)), rng)
+    factors = lognormal_factors(variation, (draws, sleepers), rng)
     base = SleeperCell.identical(passage, foundation, sleepers)
     seat, moment = np.full(draws, np.nan), np.full(draws, np.nan)
     converged, used = np.zeros(draws, bool), np.zeros(draws, int)

@@ -37,6 +37,8 @@ from ..timedomain.ring_state import ring_state_from_solution
 from ..timedomain.spectrum import Spectrum, record_spectrum
 from ..timedomain.simulation import simulate_time_domain
 from ..model.passage import Passage
+from ..model.track import require_non_negative, require_positive
+from ..solvers.arguments import require_count
 from ..model.train import Train
 
 __all__ = ["Spectrum", "record_spectrum", "tiled_train", "StabilityCheck", "check_stability"]
@@ -212,11 +214,13 @@ def check_stability(solution, periods: int = 20, tol: float = 1e-2, elements_per
     >>> check.verdict, bool(check.distance.max() < 1e-3)
     ('stays', True)
     """
-    if isinstance(periods, bool) or not isinstance(periods, (int, np.integer)) or periods < 2:
-        raise ValueError(f"periods must be an integer >= 2; got {periods!r}")
-    if not (np.isfinite(tol) and tol > 0):
-        raise ValueError(f"tol must be a finite number > 0; got {tol!r}")
-    if not (np.isfinite(kick) and 0 <= kick < tol):
+    periods = require_count("periods", periods, 2)
+    max_periods = require_count("max_periods", max_periods, periods)
+    seed = require_count("seed", seed, 0)
+    for name, value in (("tol", tol), ("settle_tol", settle_tol), ("quasi_periodic", quasi_periodic)):
+        require_positive(name, value)    # a TypeError for a string, before any comparison
+    require_non_negative("kick", kick)
+    if not kick < tol:
         raise ValueError(f"kick must be a finite number in [0, tol = {tol:g}); got {kick!r}")
     if not getattr(solution, "converged", False):
         # An unconverged iterate is no periodic solution: the ring would leave
