@@ -28,6 +28,7 @@ stable to the disturbances that fit the ring.
 
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -214,6 +215,10 @@ def check_stability(solution, periods: int = 20, tol: float = 1e-2, elements_per
     """
     if isinstance(periods, bool) or not isinstance(periods, (int, np.integer)) or periods < 2:
         raise ValueError(f"periods must be an integer >= 2; got {periods!r}")
+    for name, value in (("tol", tol), ("kick", kick), ("settle_tol", settle_tol),
+                        ("quasi_periodic", quasi_periodic)):
+        if isinstance(value, bool) or not isinstance(value, numbers.Real):
+            raise TypeError(f"{name} must be a real number; got {value!r}")
     if not (np.isfinite(tol) and tol > 0):
         raise ValueError(f"tol must be a finite number > 0; got {tol!r}")
     if not (np.isfinite(kick) and 0 <= kick < tol):
