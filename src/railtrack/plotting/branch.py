@@ -77,7 +77,7 @@ def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = Non
     else:
         by_hill = getattr(branch, "multipliers", None) is not None
         judge = "Floquet" if by_hill else "ring"
-        verdicts = branch.verdicts
+        verdicts = _verdicts(branch.stable)
         for verdict, style, colour in (("stable", "-", BLUE), ("unstable", ":", BLUE),
                                        ("unknown", "--", "0.6")):
             drawn = verdicts == verdict
@@ -124,6 +124,11 @@ def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = Non
     return fig
 
 
+def _verdicts(stable) -> np.ndarray:
+    """"stable", "unstable" or "unknown" per point from ``Branch.stable`` (True, False, None)."""
+    return np.array([{True: "stable", False: "unstable"}.get(flag, "unknown") for flag in stable])
+
+
 def plot_multipliers(branch, *, scanned=None) -> Figure:
     """The dominant Floquet multiplier |mu| along a branch, against the unit circle.
 
@@ -145,7 +150,7 @@ def plot_multipliers(branch, *, scanned=None) -> Figure:
     fig, ax = new_figure()
     # where the verdict is unknown the search could have missed the dominant multiplier:
     # the largest one it found is no value to draw
-    size = np.where(branch.verdicts == "unknown", np.nan, np.abs(branch.multipliers))
+    size = np.where(_verdicts(branch.stable) == "unknown", np.nan, np.abs(branch.multipliers))
     ax.semilogy(branch.values, size, "-", color=BLUE, lw=1.3,
                 label="dominant |μ|, disturbances that repeat every wagon", gid="multiplier")
     if scanned is not None:
