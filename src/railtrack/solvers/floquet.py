@@ -23,6 +23,12 @@ makes spurious exponents whose eigenvectors sit on the highest harmonics;
 each exponent reports the share of its eigenvector on the top fifth of the
 harmonics, and those above `TAIL_LIMIT` are "unresolved" and never decide
 the verdict.
+
+The verdict is "unstable" when a resolved multiplier lies outside the unit
+circle, "stable" only when none does and the search could not have missed
+one (its box reaches above the a-priori bound on |mu|, its contour has
+points enough, every phase was searched), and "unknown" otherwise
+(`railtrack.solvers.floquet_verdict`).
 """
 
 from __future__ import annotations

@@ -121,6 +121,14 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
         where there was one) set; with Hill's method also ``multipliers``
         (the dominant one per point) and ``changes``.
 
+    Raises
+    ------
+    TypeError
+        If `branch` is not a `Branch` (e.g. a `Solution`: judge it with
+        `railtrack.floquet` or `railtrack.check_stability`).
+    ValueError
+        A point not converged, an unknown method, or options of the other method.
+
     Examples
     --------
     >>> import railtrack as rt
