@@ -256,7 +256,8 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     theta_dominant = float(phases[resolved][0]) if resolved.any() else float("nan")
     bases_of = np.array([found[i][3] for i in order])
     worst = float(bases_of[resolved][0]) if resolved.any() else float(bases[0])
-    bound = growth_bound(solution)
+    # the bound matters only where it could turn a "stable" into "unknown"
+    bound = growth_bound(solution) if abs(dominant) < 1 and shifts else float("nan")
     verdict, gaps = search_verdict(dominant, max_multiplier=max_multiplier, bound=bound,
                                    points=int(points), shifts=shifts)
     message = (f"{verdict}: largest multiplier |mu| = "

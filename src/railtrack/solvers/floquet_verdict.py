@@ -147,10 +147,16 @@ def growth_bound(solution) -> float:
     >>> growth_bound(s)      # constant k, positive d: no disturbance grows
     1.0
     """
-    period = float(solution.period)
-    t = np.linspace(0.0, period, BOUND_SAMPLES, endpoint=False)
-    w, v = solution.sleeper_displacement(t), solution.sleeper_velocity(t)
-    stiffness, damping = (np.broadcast_to(np.asarray(part, dtype=float), t.shape)
+    period, m = float(solution.period), int(solution.harmonics)
+    samples = max(BOUND_SAMPLES, 16 * m)
+    # w and w' over one period at t_j = j T / N, by an inverse FFT of c_0..c_m
+    spectrum = np.zeros(samples // 2 + 1, dtype=complex)
+    spectrum[: m + 1] = solution.coefficients[m:]
+    omega = np.asarray(solution.frequencies[m:], dtype=float)
+    w = np.fft.irfft(spectrum, samples) * samples
+    spectrum[: m + 1] *= 1j * omega
+    v = np.fft.irfft(spectrum, samples) * samples
+    stiffness, damping = (np.broadcast_to(np.asarray(part, dtype=float), w.shape)
                           for part in solution.foundation.tangent(w, v))
     if not (np.all(np.isfinite(stiffness)) and np.all(np.isfinite(damping))):
         return float("inf")
