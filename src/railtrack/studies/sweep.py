@@ -164,9 +164,9 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
         "full" (or True): `railtrack.floquet` at the sweep's m,
         wagon-periodic disturbances; needs H / L an integer for every
         member.  "off" (or False): nothing.  Either look runs per member, in
-        a loop, and costs far more than the batched solve: at m = 25-30 on a
-        shared 2-core machine "quick" takes about 0.1 s a member of a
-        nonlinear law, "full" about 70 ms a member on the fold
+        a loop, and costs far more than the batched solve: on a shared
+        2-core machine "quick" takes about 9 ms a member of a nonlinear law
+        at m = 15 and 35 ms at m = 30; at m = 25 "full" about 70 ms a member on the fold
         track of chapter 10 (480-545 m/s) and 280 ms on the paper's track
         (30-100 m/s), against 0.5-5 ms a member for the sweep itself.
     **values : array_like of real numbers, shape (B,)

@@ -73,7 +73,7 @@ def law_curves(track, train, laws: dict, speeds, harmonics: int = 30) -> dict:
     """
     curves = {}
     for name, law in laws.items():
-        # stability="off": the quick look costs ~0.1 s a member, 600 members a law; on
+        # stability="off": the quick look costs ~35 ms a member at m = 30, 600 members a law; on
         # chapter 10's lightly damped track it found no unstable member at 61 speeds
         # from 100 to 700 m/s for any of the laws (issue 27)
         s = sweep(track, train, law, harmonics=harmonics, speed=np.asarray(speeds, float),
