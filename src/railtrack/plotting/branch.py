@@ -51,8 +51,8 @@ def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = Non
     """-min w [mm] along a speed branch, its folds marked, optionally the linear law's curve.
 
     Where ``branch.stable`` is set (`railtrack.check_branch`), stable parts
-    are drawn solid and unstable parts dotted, and the points the ring was
-    run on are marked.
+    are drawn solid, unstable parts dotted, parts whose verdict is unknown
+    grey and dashed, and the points the ring was run on are marked.
 
     Parameters
     ----------
@@ -77,12 +77,18 @@ def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = Non
     else:
         by_hill = getattr(branch, "multipliers", None) is not None
         judge = "Floquet" if by_hill else "ring"
-        for flag, style, label in ((True, "-", "stable"), (False, ":", "unstable")):
-            drawn = branch.stable == flag
+        verdicts = _verdicts(branch.stable)
+        for verdict, style, colour in (("stable", "-", BLUE), ("unstable", ":", BLUE),
+                                       ("unknown", "--", "0.6")):
+            drawn = verdicts == verdict
+            if verdict == "unknown" and not drawn.any():
+                continue   # no legend entry for what is not there
             drawn[1:] |= drawn[:-1].copy()   # one point on, so that the pieces meet
             shown = np.where(drawn, dip, np.nan)
-            ax.plot(branch.values, shown, style, color=BLUE, lw=1.5,
-                    label=f"branch, {label} ({judge})", gid=f"branch-{label}")
+            label = f"branch, {verdict} ({judge})" if verdict != "unknown" else \
+                "branch, stability unknown (the search could miss a multiplier)"
+            ax.plot(branch.values, shown, style, color=colour, lw=1.5, label=label,
+                    gid=f"branch-{verdict}")
         if by_hill:
             tori = [c for c in branch.changes if c.kind != "fold"]
             at = [np.interp(c.value, branch.values[c.index:c.index + 2],
@@ -118,6 +124,11 @@ def plot_branch(branch, *, linear: tuple | None = None, ramps: dict | None = Non
     return fig
 
 
+def _verdicts(stable) -> np.ndarray:
+    """"stable", "unstable" or "unknown" per point from ``Branch.stable`` (True, False, None)."""
+    return np.array([{True: "stable", False: "unstable"}.get(flag, "unknown") for flag in stable])
+
+
 def plot_multipliers(branch, *, scanned=None) -> Figure:
     """The dominant Floquet multiplier |mu| along a branch, against the unit circle.
 
@@ -129,14 +140,17 @@ def plot_multipliers(branch, *, scanned=None) -> Figure:
         |mu| of the most unstable disturbance of any wavelength at each point
         (`railtrack.floquet` with ``theta="scan"``), drawn dashed.
 
-    Each part between folds is drawn in turn from the branch's start; folds
+    Points whose verdict is unknown (`railtrack.Branch.verdicts`) are left
+    out.  Each part between folds is drawn in turn from the branch's start; folds
     are black diamonds, the other changes of stability open squares labelled
     with their kind.
     """
     if getattr(branch, "multipliers", None) is None:
         raise ValueError("the branch has no multipliers: run rt.check_branch(branch) first")
     fig, ax = new_figure()
-    size = np.abs(branch.multipliers)
+    # where the verdict is unknown the search could have missed the dominant multiplier:
+    # the largest one it found is no value to draw
+    size = np.where(_verdicts(branch.stable) == "unknown", np.nan, np.abs(branch.multipliers))
     ax.semilogy(branch.values, size, "-", color=BLUE, lw=1.3,
                 label="dominant |μ|, disturbances that repeat every wagon", gid="multiplier")
     if scanned is not None:

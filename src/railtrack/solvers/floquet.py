@@ -23,11 +23,17 @@ makes spurious exponents whose eigenvectors sit on the highest harmonics;
 each exponent reports the share of its eigenvector on the top fifth of the
 harmonics, and those above `TAIL_LIMIT` are "unresolved" and never decide
 the verdict.
+
+The verdict is "unstable" when a resolved multiplier lies outside the unit
+circle, "stable" only when none does and the search could not have missed
+one (its box reaches above the a-priori bound on |mu|, its contour has
+points enough, every phase was searched), and "unknown" otherwise
+(`railtrack.solvers.floquet_verdict`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import numbers
 
 import numpy as np
 
@@ -35,6 +41,7 @@ from ..equations.aft_jacobian import tangent_harmonics
 from ..equations.harmonic_balance import harmonic_system
 from ..equations.hill import bloch_phases, hill_derivative, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
+from .floquet_verdict import MIN_POINTS, Floquet, growth_bound, search_verdict
 from .solution import Solution
 
 __all__ = ["Floquet", "floquet", "TAIL_LIMIT"]
@@ -47,63 +54,6 @@ EDGE = 1e-6
 """Tolerance on |Im lambda T| <= pi at the edges of the strip [rad]."""
 RESIDUAL_LIMIT = 1e-6
 """Largest relative residual ||H p|| / ||H|| of an exponent after Newton's refinement."""
-
-
-@dataclass(frozen=True, eq=False)
-class Floquet:
-    """The Floquet multipliers of a periodic solution (`floquet`).
-
-    Attributes
-    ----------
-    multipliers : ndarray of complex
-        mu = e^{lambda T}, by decreasing modulus.
-    exponents : ndarray of complex
-        lambda [1/s], |Im lambda| <= pi / T.
-    phases : ndarray of float
-        The Bloch phase per sleeper of each [rad], in [0, 2 pi).
-    tail : ndarray of float
-        Share of each eigenvector's norm on the top fifth of the harmonics [-].
-    resolved : ndarray of bool
-        ``tail <= TAIL_LIMIT``: the truncation resolves the exponent.
-    dominant : complex
-        The resolved multiplier of largest modulus (0 if none in the box).
-    stable : bool
-        |dominant| < 1.
-    kind : {"real +", "real -", "complex", "none"}
-        The dominant multiplier: real and positive (through +1: a fold, or a
-        branch point), real and negative (through -1: period doubling), or
-        one of a complex pair (Neimark–Sacker: a quasi-periodic response if the
-        crossing is supercritical).
-    frequency : float
-        arg(dominant) / 2 pi, the disturbance's frequency in the frame of the
-        train as a fraction of v / H, in [0, 0.5] [-].
-    theta : float
-        Bloch phase per sleeper of the dominant multiplier [rad].
-    base_phases : ndarray of float
-        The phases theta asked for (each stands for its N_s shifts) [rad].
-    most_unstable : float
-        The base phase whose multipliers reach the largest modulus [rad].
-    period : float
-        T = H / v [s].
-    harmonics : int
-    message : str
-    """
-
-    multipliers: np.ndarray
-    exponents: np.ndarray
-    phases: np.ndarray
-    tail: np.ndarray
-    resolved: np.ndarray
-    dominant: complex
-    stable: bool
-    kind: str
-    frequency: float
-    theta: float
-    base_phases: np.ndarray
-    most_unstable: float
-    period: float
-    harmonics: int
-    message: str
 
 
 def _base_phases(theta, sleepers: int) -> np.ndarray:
@@ -154,23 +104,37 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
         does: on the fold track at 525 m/s, m = 25 puts the dominant |mu| of
         the m = 25 orbit 3e-3 from its limit, m = 35 within 2e-5.
     min_multiplier, max_multiplier : float
-        The multipliers looked for: min <= |mu| <= max [-].
+        The multipliers looked for: min <= |mu| <= max [-].  A multiplier
+        above the box is not looked for: the verdict is "stable" only if
+        max_multiplier reaches twice above the a-priori bound on |mu| of the
+        orbit (`railtrack.solvers.floquet_verdict.growth_bound`, 4.6 on the
+        fold track at 600 m/s), else "unknown" when nothing unstable is found.
     points : int
-        Quadrature points of the contour per phase.
+        Quadrature points of the contour per phase (>= 1).  Too few miss
+        multipliers inside the box: fewer than 16 never prove stability.
     shifts : bool
         False keeps each base phase alone, without its N_s - 1 shifts: a
         quick look (about a sixteenth of the cost at theta = 0) that sees
         only the disturbances whose exponent lies in that one phase's strip,
-        so that a "stable" from it proves nothing; `solve` uses it to warn.
+        so that it finds "unstable" or "unknown", never "stable"; `solve`
+        uses it to warn.
 
     Returns
     -------
     Floquet
+        With `Floquet.verdict` "stable", "unstable" (a resolved multiplier
+        outside the unit circle) or "unknown" (none found, but the search
+        could have missed one; `Floquet.message` says how), and
+        `Floquet.stable` True, False or None accordingly.
 
     Raises
     ------
+    TypeError
+        If `solution` is not a `Solution` (e.g. a `Branch` or a `Sweep`: pass
+        one of its points).
     ValueError
-        If the solution did not converge, or H / L is not an integer.
+        If the solution did not converge, H / L is not an integer, or an
+        argument is out of its range.
 
     Examples
     --------
@@ -180,10 +144,24 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     >>> result.stable, bool(abs(result.dominant) < 0.1)
     (True, True)
     """
+    if not isinstance(solution, Solution) and callable(getattr(solution, "solution", None)):
+        name = type(solution).__name__
+        raise TypeError(f"floquet takes one periodic solution; got a {name}, which holds many: "
+                        f"pass {name.lower()}.solution(i) for one of them (rt.check_branch "
+                        "judges every point of a Branch, sweep(..., stability='full') every "
+                        "member of a sweep)")
+    if not all(hasattr(solution, name) for name in ("converged", "passage", "coefficients")):
+        raise TypeError("floquet takes a converged railtrack.Solution (from rt.solve); got "
+                        f"{type(solution).__name__}")
+    if isinstance(points, bool) or not isinstance(points, (int, np.integer)) or points < 1:
+        raise ValueError(f"points must be an integer >= 1 (contour quadrature points; "
+                         f"{MIN_POINTS} or more can prove stability); got {points!r}")
     if not solution.converged:
         raise ValueError("the Floquet multipliers of an unconverged solution mean nothing: "
                          f"it did not converge ({solution.message})")
-    if not (0 < min_multiplier < 1 < max_multiplier < np.inf):
+    if not all(isinstance(x, numbers.Real) and not isinstance(x, bool)
+               for x in (min_multiplier, max_multiplier)) \
+            or not (0 < min_multiplier < 1 < max_multiplier < np.inf):
         raise ValueError("need 0 < min_multiplier < 1 < max_multiplier < inf; got "
                          f"{min_multiplier!r}, {max_multiplier!r}")
     passage = solution.passage
@@ -278,15 +256,19 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     theta_dominant = float(phases[resolved][0]) if resolved.any() else float("nan")
     bases_of = np.array([found[i][3] for i in order])
     worst = float(bases_of[resolved][0]) if resolved.any() else float(bases[0])
-    stable = bool(abs(dominant) < 1.0)
-    message = (f"{'stable' if stable else 'unstable'}: largest multiplier |mu| = "
+    # the bound matters only where it could turn a "stable" into "unknown"
+    bound = growth_bound(solution) if abs(dominant) < 1 and shifts else float("nan")
+    verdict, gaps = search_verdict(dominant, max_multiplier=max_multiplier, bound=bound,
+                                   points=int(points), shifts=shifts)
+    message = (f"{verdict}: largest multiplier |mu| = "
                f"{abs(dominant):.4g} ({kind}"
                + (f", frequency {frequency:.3g} v/H" if kind == "complex" else "")
                + f") at Bloch phase {theta_dominant:.3g} rad per sleeper; {int(resolved.sum())} "
-               f"resolved multipliers with |mu| >= {min_multiplier:g} over {bases.size} x "
-               f"{sleepers} phases, m = {m}")
-    return Floquet(multipliers, z / period, phases, tail, resolved, dominant, stable, kind,
-                   frequency, theta_dominant, bases, worst, period, m, message)
+               f"resolved multipliers with |mu| >= {min_multiplier:g} over {bases.size} x {sleepers} phases, m = {m}"
+               + (f"; none outside the unit circle, but {gaps}" if gaps else ""))
+    return Floquet(multipliers, z / period, phases, tail, resolved, dominant, verdict == "stable",
+                   kind, frequency, theta_dominant, bases, worst, period, m, message, verdict,
+                   bound)
 
 
 def _distinct(found: list) -> list:

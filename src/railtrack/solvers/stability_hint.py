@@ -10,7 +10,7 @@ nonlinear law, `judge_stability` looks at the Floquet multipliers
   the disturbances that repeat every sleeper, about twice the cost of the
   solve; skipped above m = 100 harmonics, where it would cost far more.  It warns when it finds a multiplier outside the unit circle; when
   it finds none it proves nothing, since the other 29 phases of a 30-sleeper
-  wagon are not looked at.
+  wagon are not looked at: its verdict is then "unknown", never "stable".
 * ``"full"``: `rt.floquet` with its defaults (every disturbance that repeats
   every wagon), about twenty times the cost of the solve; the result is
   kept on the solution (`Solution.stability`).
@@ -28,7 +28,8 @@ from ..model.foundations import LinearFoundation
 from .floquet import Floquet, floquet
 from .solution import Solution
 
-__all__ = ["UnstableSolutionWarning", "STABILITY_MODES", "judge_stability"]
+__all__ = ["UnstableSolutionWarning", "STABILITY_MODES", "judge_stability", "stability_look",
+           "unstable_message"]
 
 STABILITY_MODES = ("quick", "full", "off")
 QUICK_FLOOR = 0.9
@@ -43,6 +44,39 @@ KINDS = {"real +": "a real positive one", "real -": "a real negative one",
 
 class UnstableSolutionWarning(UserWarning):
     """The periodic solution found is unstable: a train does not stay on it."""
+
+
+def stability_look(solution: Solution, mode: str) -> tuple[str, Floquet | None]:
+    """The verdict of `judge_stability`'s look, without a warning: (verdict, `Floquet` or None).
+
+    "stable" for a linear law (nothing grows on it), "unknown" where nothing
+    is looked at (``mode="off"``, an unconverged solution, a quick look
+    skipped) or the look cannot tell (`railtrack.Floquet.verdict`).
+    """
+    if mode not in STABILITY_MODES:
+        raise ValueError(f"stability must be one of {STABILITY_MODES}; got {mode!r}")
+    if mode == "off" or not solution.converged:
+        return "unknown", None
+    if isinstance(solution.foundation, LinearFoundation):
+        return "stable", None
+    sleepers = float(solution.passage.wagon_length / solution.passage.sleeper_spacing)
+    if mode == "quick" and abs(sleepers - round(sleepers)) > 1e-9 * sleepers:
+        return "unknown", None   # Hill's phases need H/L whole; "full" says so with an error
+    if mode == "quick" and solution.harmonics > QUICK_HARMONICS:
+        return "unknown", None   # the look would cost far more than the solve
+    # The quick look searches only near and outside the unit circle, where a verdict
+    # of "unstable" would lie: at low speed the box down to |mu| = 0.01 holds dozens
+    # of well-damped exponents whose refinement would cost ten solves.
+    result = floquet(solution) if mode == "full" else floquet(
+        solution, shifts=False, min_multiplier=QUICK_FLOOR, points=QUICK_POINTS)
+    return result.verdict, result
+
+
+def unstable_message(solution: Solution, result: Floquet) -> str:
+    """The warning's words for an unstable `solution` with multipliers `result`."""
+    return (f"the periodic solution found at v = {float(solution.passage.speed):g} m/s is "
+            f"unstable: a disturbance of it grows {abs(result.dominant):.3f}-fold per period "
+            f"({KINDS[result.kind]} of Floquet multipliers), so a train does not stay on it")
 
 
 def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floquet | None:
@@ -60,27 +94,10 @@ def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floqu
     Floquet or None
         The multipliers for ``mode="full"`` on a converged nonlinear solve, else None.
     """
-    if mode not in STABILITY_MODES:
-        raise ValueError(f"stability must be one of {STABILITY_MODES}; got {mode!r}")
-    if mode == "off" or not solution.converged or isinstance(solution.foundation,
-                                                              LinearFoundation):
-        return None
-    sleepers = float(solution.passage.wagon_length / solution.passage.sleeper_spacing)
-    if mode == "quick" and abs(sleepers - round(sleepers)) > 1e-9 * sleepers:
-        return None   # Hill's phases need H/L whole; "full" says so with an error
-    if mode == "quick" and solution.harmonics > QUICK_HARMONICS:
-        return None   # the look would cost far more than the solve
-    # The quick look searches only near and outside the unit circle, where a verdict
-    # of "unstable" would lie: at low speed the box down to |mu| = 0.01 holds dozens
-    # of well-damped exponents whose refinement would cost ten solves.
-    result = floquet(solution) if mode == "full" else floquet(
-        solution, shifts=False, min_multiplier=QUICK_FLOOR, points=QUICK_POINTS)
-    if not result.stable:
-        v = float(solution.passage.speed)
+    verdict, result = stability_look(solution, mode)
+    if verdict == "unstable":
         warnings.warn(UnstableSolutionWarning(
-            f"the periodic solution found at v = {v:g} m/s is unstable: a disturbance of it "
-            f"grows {abs(result.dominant):.3f}-fold per period ({KINDS[result.kind]} of "
-            "Floquet multipliers), so a train does not stay on it.  Other solutions may exist at "
+            unstable_message(solution, result) + ".  Other solutions may exist at "
             "this speed: rt.continuation finds them and rt.check_branch judges each; "
             "solve(..., stability='off') skips this check"), stacklevel=stacklevel)
     return result if mode == "full" else None

@@ -155,10 +155,12 @@ class Branch:
         The turning points passed, in the order met.
     message : str
         Why the continuation stopped, in words.
-    stable : ndarray of bool or None
-        Stability of each point; None until `railtrack.check_branch` fills it
-        (from every point's Floquet multipliers, or from the time-domain
-        ring's verdicts on a sample of the points).
+    stable : ndarray of object (True, False or None) or None
+        Stability of each point, None where its Floquet search could have
+        missed a multiplier outside the unit circle (`verdicts`, "unknown");
+        None until `railtrack.check_branch` fills it (from every point's
+        Floquet multipliers, or from the time-domain ring's verdicts on a
+        sample of the points).
     checks : dict or None
         Point index -> `railtrack.Floquet` (or `railtrack.StabilityCheck`)
         of each point judged (`railtrack.check_branch`); None until then.
@@ -209,6 +211,14 @@ class Branch:
 
     def __len__(self) -> int:
         return len(self.values)
+
+    @property
+    def verdicts(self) -> np.ndarray | None:
+        """"stable", "unstable" or "unknown" per point (`stable` True, False, None); None until judged."""
+        if self.stable is None:
+            return None
+        return np.array([{True: "stable", False: "unstable"}.get(flag, "unknown")
+                         for flag in self.stable])
 
     @property
     def fold_values(self) -> np.ndarray:

@@ -113,10 +113,21 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
     Returns
     -------
     Branch
-        A copy with ``stable`` (bool, one per point) and ``checks`` (point
+        A copy with ``stable`` (one per point: True, False, or None where
+        the Floquet search could have missed a multiplier outside the unit
+        circle, `railtrack.Floquet.verdict` "unknown"; changes are located
+        only between a stable and an unstable point) and ``checks`` (point
         index -> `Floquet`, or -> `StabilityCheck` with the longer watch
         where there was one) set; with Hill's method also ``multipliers``
         (the dominant one per point) and ``changes``.
+
+    Raises
+    ------
+    TypeError
+        If `branch` is not a `Branch` (e.g. a `Solution`: judge it with
+        `railtrack.floquet` or `railtrack.check_stability`).
+    ValueError
+        A point not converged, an unknown method, or options of the other method.
 
     Examples
     --------
@@ -130,6 +141,11 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
     >>> bool(marked.stable.all()), [check.verdict for check in marked.checks.values()]
     (True, ['stays', 'stays', 'stays'])
     """
+    if not isinstance(branch, Branch):
+        raise TypeError(f"check_branch takes a Branch from rt.continuation; got a "
+                        f"{type(branch).__name__}" + (": judge one solution with "
+                        "rt.floquet(solution) or rt.check_stability(solution)"
+                        if hasattr(branch, "coefficients") else ""))
     if method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}; got {method!r}")
     if not np.all(branch.converged):
@@ -187,7 +203,8 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
         known = np.array(sorted(i for i in checks if i in segment))
         for i in segment:
             stable[i] = checks[int(known[np.argmin(np.abs(known - i))])].stable
-    return dataclasses.replace(branch, stable=stable, checks=dict(sorted(checks.items())))
+    return dataclasses.replace(branch, stable=stable.astype(object),
+                               checks=dict(sorted(checks.items())))
 
 
 def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) -> Branch:
@@ -197,24 +214,28 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
     # the full set of multipliers needs `floquet`'s default 24.
     options.setdefault("points", VERDICT_POINTS)
     checks = {i: floquet(branch.solution(i), theta, **options) for i in range(len(branch))}
-    stable = np.array([checks[i].stable for i in range(len(branch))])
+    stable = np.array([checks[i].stable for i in range(len(branch))], dtype=object)
+    verdicts = [checks[i].verdict for i in range(len(branch))]
     dominant = np.array([checks[i].dominant for i in range(len(branch))])
     folds = {fold.index: fold for fold in branch.folds}
     changes = []
     values = np.asarray(branch.values, dtype=float)
-    for i in np.flatnonzero(stable[:-1] != stable[1:]):
-        i = int(i)
+    # A change is located only between a point shown stable and one shown unstable: next
+    # to an "unknown" point the search could have missed what would place it.
+    for i in range(len(branch) - 1):
+        if {verdicts[i], verdicts[i + 1]} != {"stable", "unstable"}:
+            continue
         ends = [(values[k], branch.coefficients[k], checks[k]) for k in (i, i + 1)]
         kind = None
         if i in folds:
             # At the fold a real multiplier passes +1; stability changes there unless
             # another multiplier is still outside on the stable side.  A point just
             # past the fold on that side tells.
-            steady = i if stable[i] else i + 1
+            steady = i if verdicts[i] == "stable" else i + 1
             near = folds[i].value + FOLD_STEP * (values[steady] - folds[i].value)
             trial = _solved(branch, near, branch.coefficients[steady])
             past = None if trial is None else floquet(trial, theta, **options)
-            if past is None or past.stable:
+            if past is None or past.verdict != "unstable":
                 kind, value, frequency, phase = "fold", folds[i].value, 0.0, 0.0
             else:
                 ends[1 - (steady - i)] = (near, trial.coefficients[branch.harmonics:], past)

@@ -45,10 +45,10 @@ from ..solvers.solution import ConvergenceWarning, Solution, TruncationWarning
 from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION
 from ..solvers.truncation import MAX_AUTO_HARMONICS, auto_samples, grown_harmonics
 from .period_extremes import period_extremes
-from .sweep_members import (BLOCK, MAX_RESULT_BYTES, check_members_conditioning,
+from .sweep_members import (BLOCK, MAX_RESULT_BYTES, check_members_conditioning, warn_members,
                             polynomial_samples, predicted_harmonics, require_fits, rows,
                             split_fields)
-from .sweep_stability import member_stability, require_whole_sleepers
+from .sweep_stability import member_stability, require_whole_sleepers, stability_mode
 
 __all__ = ["Sweep", "sweep", "BLOCK", "MAX_RESULT_BYTES"]
 
@@ -80,16 +80,17 @@ class Sweep:
         Extremes of the force on the foundation, compression positive [N].
     passage, foundation
         The batched passage and law (fields of shape (B, 1) where swept).
-    stable : ndarray of bool, shape (B,), or None
-        With ``sweep(..., stability=True)``: True where the member converged
-        and its Floquet multipliers (`railtrack.floquet`) all lie inside the
-        unit circle; False where it is unstable *or did not converge* (no
-        verdict: `dominant_multiplier` is NaN there).  None without
-        ``stability=True``.
+    stable : ndarray of object, shape (B,), or None
+        Each member judged as `railtrack.solve` judges a solution
+        (`railtrack.studies.sweep_stability`): True (stable), False
+        (unstable) or None (unknown: not converged, or the look could have
+        missed a multiplier outside the unit circle; the default quick look
+        finds unstable members and proves none stable).  None with
+        ``stability="off"``.  `verdicts` says it in words.
     dominant_multiplier : ndarray of complex, shape (B,), or None
-        With ``stability=True``: each member's dominant multiplier mu per
-        period H / v (`railtrack.Floquet.dominant`) [-]; NaN where the member
-        did not converge.  None without ``stability=True``.
+        Each member's dominant multiplier mu per period H / v
+        (`railtrack.Floquet.dominant`) [-] where its verdict is known from a
+        Floquet search, else NaN.  None with ``stability="off"``.
     """
 
     values: dict
@@ -113,6 +114,12 @@ class Sweep:
     def __len__(self) -> int:
         return len(self.converged)
 
+    @property
+    def verdicts(self) -> np.ndarray | None:
+        """"stable", "unstable" or "unknown" per member (`stable` True, False, None)."""
+        return None if self.stable is None else np.array(
+            [{True: "stable", False: "unstable"}.get(flag, "unknown") for flag in self.stable])
+
     def solution(self, index: int) -> Solution:
         """Member `index` as a `railtrack.Solution` (for its rail, moments, bowl ...)."""
         passage = Passage(member(self.passage.track, index), member(self.passage.train, index))
@@ -129,7 +136,7 @@ class Sweep:
 
 def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto", *,
           accuracy: float | None = None, tol: float = 1e-10, max_iterations: int = 100,
-          samples: int | None = None, stability: bool = False, **values) -> Sweep:
+          samples: int | None = None, stability: str | bool = "quick", **values) -> Sweep:
     """Solve eq. (17) for every value of the swept field(s), all at once.
 
     Parameters
@@ -149,16 +156,19 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
     tol, max_iterations, samples
         As for `railtrack.solve` with ``method="newton"``; samples needs an
         explicit m.
-    stability : bool
-        Also judge every converged member by its Floquet multipliers
-        (`railtrack.floquet` at the sweep's m, wagon-periodic disturbances):
-        `Sweep.stable` and `Sweep.dominant_multiplier`.  One Hill's-method
-        computation per converged member, in a loop, which costs far more
-        than the batched solve: measured at m = 25 on a shared 2-core
-        machine, about 70 ms a member on the fold track of chapter 10
-        (480-545 m/s) and 280 ms on the paper's track (30-100 m/s), against
-        0.5-5 ms a member for the sweep itself.  Needs H / L an integer for
-        every member.
+    stability : {"quick", "full", "off"} or bool
+        Judge every converged member as `railtrack.solve` does
+        (`Sweep.stable`, `Sweep.dominant_multiplier`; one
+        `railtrack.UnstableSolutionWarning` for all unstable members).
+        "quick" (default): finds unstable members, proves none stable.
+        "full" (or True): `railtrack.floquet` at the sweep's m,
+        wagon-periodic disturbances; needs H / L an integer for every
+        member.  "off" (or False): nothing.  Either look runs per member, in
+        a loop, and costs far more than the batched solve: on a shared
+        2-core machine "quick" takes about 9 ms a member of a nonlinear law
+        at m = 15 and 35 ms at m = 30; at m = 25 "full" about 70 ms a member on the fold
+        track of chapter 10 (480-545 m/s) and 280 ms on the paper's track
+        (30-100 m/s), against 0.5-5 ms a member for the sweep itself.
     **values : array_like of real numbers, shape (B,)
         The field(s) to sweep by name, e.g. ``speed=...``, ``pad_damping=...``,
         ``stiffness=...``, ``epsilon=...``; several fields sweep together.
@@ -176,7 +186,7 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
         Bad values (not real, not 1-D, unequal lengths, out of a field's
         range), a member for which eq. (3) loses accuracy (as `railtrack.solve`
         refuses it), results larger than `MAX_RESULT_BYTES`, or
-        ``stability=True`` with a member whose H / L is not an integer.
+        ``stability="full"`` with a member whose H / L is not an integer.
 
     Examples
     --------
@@ -187,8 +197,7 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
     >>> bool(result.converged.all()), np.round(result.lowest * 1e3, 3).tolist()
     (True, [-0.854, -0.853])
     """
-    if not isinstance(stability, (bool, np.bool_)):
-        raise TypeError(f"stability must be True or False; got {stability!r}")
+    stability = stability_mode(stability)
     if not dataclasses.is_dataclass(foundation):
         raise TypeError(f"sweep takes a dataclass foundation law (Linear, Bilinear, Cubic); "
                         f"got {type(foundation).__name__}")
@@ -209,7 +218,7 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
         require_jacobian_samples(samples, harmonics)
     require_fits(size, 1 if automatic else harmonics)
     check_members_conditioning(passage, size, values)
-    if stability:
+    if stability == "full":
         require_whole_sleepers(passage, size, values)
     m = harmonics if not automatic else predicted_harmonics(passage, law, size, accuracy)
     run = dict(passage=passage, law=law, size=size, tol=tol, max_iterations=max_iterations)
@@ -229,10 +238,9 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
         start[:, : m + 1] = result.coefficients[:, m:]
         m = grown
         result = _solve(m, None, start, automatic, **run)
-    _warn(result, automatic, accuracy, tuple(values))
-    verdicts = {}
-    if stability:
-        verdicts = dict(zip(("stable", "dominant_multiplier"), member_stability(result, values)))
+    warn_members(result, automatic, accuracy, tuple(values))
+    verdicts = {} if stability == "off" else dict(zip(
+        ("stable", "dominant_multiplier"), member_stability(result, values, stability)))
     return dataclasses.replace(result, values={k: np.array(v, dtype=float)
                                                for k, v in values.items()}, **verdicts)
 
@@ -268,26 +276,3 @@ def _solve(m, samples, initial, automatic, *, passage, law, size, tol, max_itera
     return Sweep(values={}, harmonics=m, coefficients=joined[0], converged=joined[1],
                  iterations=joined[2], residual=joined[3], truncation_error=joined[4],
                  passage=passage, foundation=law, **extremes)
-
-
-def _warn(result: Sweep, automatic: bool, accuracy: float, swept: tuple) -> None:
-    """The sweep's warnings: unconverged members, and truncation above the limit."""
-    failed = int((~result.converged).sum())
-    if failed:
-        first = int(np.flatnonzero(~result.converged)[0])
-        hint = (" Newton stalls near folds of the response in speed: rt.continuation follows "
-                "such a branch through them." if "speed" in swept else "")
-        warnings.warn(ConvergenceWarning(
-            f"{failed} of {len(result)} members of the sweep did not converge (the first is "
-            f"member {first}); their coefficients are not solutions (Sweep.converged).{hint}"),
-            stacklevel=3)
-    errors = np.where(result.converged, result.truncation_error, np.nan)
-    limit = accuracy if automatic else WARN_TRUNCATION
-    if np.any(errors > limit):
-        worst = int(np.nanargmax(errors))
-        advice = ("'auto' stopped growing m; pass a larger harmonics" if automatic
-                  else "pass a larger harmonics or use 'auto'")
-        warnings.warn(TruncationWarning(
-            f"harmonics={result.harmonics}: {int(np.sum(errors > limit))} member(s) of the sweep "
-            f"have an estimated truncation error above {limit:.0%}, up to {errors[worst]:.1%} "
-            f"at member {worst} ({advice})"), stacklevel=3)

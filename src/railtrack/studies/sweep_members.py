@@ -12,6 +12,7 @@ choose the AFT samples and the first m.
 from __future__ import annotations
 
 import dataclasses
+import warnings
 
 import numpy as np
 
@@ -21,10 +22,13 @@ from ..model.track import Track
 from ..model.train import Train
 from ..solvers.batch import member
 from ..solvers.conditioning import ROUNDOFF_LIMIT, check_conditioning
+from ..solvers.solution import ConvergenceWarning, TruncationWarning
+from ..solvers.solve import WARN_TRUNCATION
 from ..solvers.truncation import predict_harmonics
 
 __all__ = ["BLOCK", "MAX_RESULT_BYTES", "result_bytes", "require_fits", "split_fields",
-           "check_members_conditioning", "predicted_harmonics", "polynomial_samples", "rows"]
+           "check_members_conditioning", "predicted_harmonics", "polynomial_samples", "rows",
+           "warn_members"]
 
 BLOCK = 8192
 """Members solved together: bounds the working memory (the AFT grids and Jacobians)."""
@@ -122,3 +126,26 @@ def rows(value, index: np.ndarray, size: int):
                if isinstance(getattr(value, f.name), np.ndarray)
                and getattr(value, f.name).ndim == 2 and getattr(value, f.name).shape[0] == size}
     return dataclasses.replace(value, **changes) if changes else value
+
+
+def warn_members(result: Sweep, automatic: bool, accuracy: float, swept: tuple) -> None:
+    """The sweep's warnings: unconverged members, and truncation above the limit."""
+    failed = int((~result.converged).sum())
+    if failed:
+        first = int(np.flatnonzero(~result.converged)[0])
+        hint = (" Newton stalls near folds of the response in speed: rt.continuation follows "
+                "such a branch through them." if "speed" in swept else "")
+        warnings.warn(ConvergenceWarning(
+            f"{failed} of {len(result)} members of the sweep did not converge (the first is "
+            f"member {first}); their coefficients are not solutions (Sweep.converged).{hint}"),
+            stacklevel=3)
+    errors = np.where(result.converged, result.truncation_error, np.nan)
+    limit = accuracy if automatic else WARN_TRUNCATION
+    if np.any(errors > limit):
+        worst = int(np.nanargmax(errors))
+        advice = ("'auto' stopped growing m; pass a larger harmonics" if automatic
+                  else "pass a larger harmonics or use 'auto'")
+        warnings.warn(TruncationWarning(
+            f"harmonics={result.harmonics}: {int(np.sum(errors > limit))} member(s) of the sweep "
+            f"have an estimated truncation error above {limit:.0%}, up to {errors[worst]:.1%} "
+            f"at member {worst} ({advice})"), stacklevel=3)

@@ -1,0 +1,223 @@
+"""The verdict of a Floquet search: stable, unstable, or unknown when the search could miss.
+
+`railtrack.floquet` looks for multipliers only inside a box, min <= |mu| <=
+max, with a contour of a given number of quadrature points.  Finding a
+resolved multiplier outside the unit circle proves the solution unstable,
+whatever the box.  Finding none proves it stable only if nothing can hide:
+
+* above the box.  An a-priori bound on the growth per period
+  (`growth_bound`) says how large a multiplier the linearised track can
+  have; the box must reach above it (``max_multiplier >= BOUND_MARGIN``
+  times the bound).
+* between the quadrature points.  Beyn's method with too few points misses
+  eigenvalues inside the contour (on the fold track of chapter 10, one or two
+  points find nothing at 525 m/s where |mu| = 2.0).  Fewer than
+  `MIN_POINTS` points cannot prove stability: 16 points give the
+  dominant multiplier that 48 give at every point of chapter 10's fold
+  branch (tests/test_floquet.py), and already 3 do there.
+* in the phases not looked at (``shifts=False``, the quick look of `solve`).
+
+Otherwise the verdict is "unknown", and `Floquet.stable` is None.
+
+The bound.  Linearised about the orbit, the track is the rail and pads
+(constant, passive) and, under each sleeper of mass m_s, the foundation's
+tangent stiffness k(t) and damping d(t).  With any shift kappa that makes
+k~ = k + kappa > 0, the energy E = (rail and pads) + sum 1/2 m_s w'^2 +
+1/2 k~ w^2 of a disturbance obeys
+
+    dE/dt <= [ (k~'/k~)_+ + 2 max(-d, 0) / m_s + kappa / sqrt(m_s min k~) ] E,
+
+since the pads and a positive d dissipate, 1/2 k~' w^2 <= (k~'/k~)_+ 1/2 k~ w^2,
+and |kappa w w'| <= kappa E / sqrt(m_s min k~).  A Bloch disturbance carries
+the same energy per sleeper spacing through every span, so the amplitude
+grows per period T by at most
+
+    log |mu| <= 1/2 (upward variation of log k~ over T)
+                + int_0^T max(-d, 0) / m_s dt + T kappa / (2 sqrt(m_s min k~)).
+
+A kinked law (bilinear, gap) gives finite jumps of log k~, so the bound stays
+finite.  Several shifts are tried and the least bound kept (each is a bound).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "BOUND_MARGIN", "growth_bound", "search_verdict"]
+
+VERDICTS = ("stable", "unstable", "unknown")
+MIN_POINTS = 16
+"""Fewest contour points per phase for which a search that finds nothing outside proves stability."""
+BOUND_MARGIN = 2.0
+"""The box must reach this many times above the a-priori bound on |mu| (`growth_bound`) [-]."""
+BOUND_SAMPLES = 4096
+"""Samples of the orbit over one period for the bound (its sampled variation of log k~)."""
+SHIFT_FRACTIONS = (1e-3, 1e-2, 1e-1, 1.0)
+"""Shifts kappa tried, above -min k, as fractions of the range of k (and kappa = 0 if min k > 0)."""
+
+
+@dataclass(frozen=True, eq=False)
+class Floquet:
+    """The Floquet multipliers of a periodic solution (`railtrack.floquet`).
+
+    Attributes
+    ----------
+    multipliers : ndarray of complex
+        mu = e^{lambda T}, by decreasing modulus.
+    exponents : ndarray of complex
+        lambda [1/s], |Im lambda| <= pi / T.
+    phases : ndarray of float
+        The Bloch phase per sleeper of each [rad], in [0, 2 pi).
+    tail : ndarray of float
+        Share of each eigenvector's norm on the top fifth of the harmonics [-].
+    resolved : ndarray of bool
+        ``tail <= TAIL_LIMIT``: the truncation resolves the exponent.
+    dominant : complex
+        The resolved multiplier of largest modulus (0 if none in the box).
+    stable : bool or None
+        True for the verdict "stable", False for "unstable", None for
+        "unknown": no multiplier outside the unit circle was found, but the
+        search could have missed one (`verdict`).
+    kind : {"real +", "real -", "complex", "none"}
+        The dominant multiplier: real and positive (through +1: a fold, or a
+        branch point), real and negative (through -1: period doubling), or
+        one of a complex pair (Neimark–Sacker: a quasi-periodic response if the
+        crossing is supercritical).
+    frequency : float
+        arg(dominant) / 2 pi, the disturbance's frequency in the frame of the
+        train as a fraction of v / H, in [0, 0.5] [-].
+    theta : float
+        Bloch phase per sleeper of the dominant multiplier [rad].
+    base_phases : ndarray of float
+        The phases theta asked for (each stands for its N_s shifts) [rad].
+    most_unstable : float
+        The base phase whose multipliers reach the largest modulus [rad].
+    period : float
+        T = H / v [s].
+    harmonics : int
+    message : str
+    verdict : {"stable", "unstable", "unknown"}
+        "unstable" if a resolved multiplier lies outside the unit circle;
+        "stable" if none does and the search could not have missed one
+        (`railtrack.solvers.floquet_verdict`); "unknown" otherwise.
+    bound : float
+        The a-priori bound on |mu| of the linearised track (`growth_bound`)
+        [-]; NaN if not computed.
+    """
+
+    multipliers: np.ndarray
+    exponents: np.ndarray
+    phases: np.ndarray
+    tail: np.ndarray
+    resolved: np.ndarray
+    dominant: complex
+    stable: bool | None
+    kind: str
+    frequency: float
+    theta: float
+    base_phases: np.ndarray
+    most_unstable: float
+    period: float
+    harmonics: int
+    message: str
+    verdict: str | None = None
+    bound: float = float("nan")
+
+    def __post_init__(self) -> None:
+        if self.verdict is None:      # built from a bare flag: it says what the flag says
+            object.__setattr__(self, "verdict", {True: "stable", False: "unstable"}.get(
+                None if self.stable is None else bool(self.stable), "unknown"))
+        if self.verdict not in VERDICTS:
+            raise ValueError(f"verdict must be one of {VERDICTS}; got {self.verdict!r}")
+        object.__setattr__(self, "stable", {"stable": True, "unstable": False}.get(self.verdict))
+
+
+def growth_bound(solution) -> float:
+    """An upper bound on |mu| per period T = H / v of any disturbance of `solution` [-].
+
+    From the energy of the linearised track (module docstring); inf if the
+    foundation's tangent along the orbit is not finite.
+
+    Examples
+    --------
+    >>> import railtrack as rt
+    >>> s = rt.solve(rt.Track.paper(), rt.Train.paper(), rt.LinearFoundation.paper())
+    >>> growth_bound(s)      # constant k, positive d: no disturbance grows
+    1.0
+    """
+    period, m = float(solution.period), int(solution.harmonics)
+    samples = max(BOUND_SAMPLES, 16 * m)
+    # w and w' over one period at t_j = j T / N, by an inverse FFT of c_0..c_m
+    spectrum = np.zeros(samples // 2 + 1, dtype=complex)
+    spectrum[: m + 1] = solution.coefficients[m:]
+    omega = np.asarray(solution.frequencies[m:], dtype=float)
+    w = np.fft.irfft(spectrum, samples) * samples
+    spectrum[: m + 1] *= 1j * omega
+    v = np.fft.irfft(spectrum, samples) * samples
+    stiffness, damping = (np.broadcast_to(np.asarray(part, dtype=float), w.shape)
+                          for part in solution.foundation.tangent(w, v))
+    if not (np.all(np.isfinite(stiffness)) and np.all(np.isfinite(damping))):
+        return float("inf")
+    mass = float(solution.passage.sleeper_mass)
+    damping_part = float(np.mean(np.maximum(-damping, 0.0))) * period / mass
+    low, high = float(stiffness.min()), float(stiffness.max())
+    shifts = [0.0] if low > 0 else []
+    spread = max(high - low, abs(high), np.finfo(float).tiny)
+    shifts += [max(-low, 0.0) + f * spread for f in SHIFT_FRACTIONS]
+    best = float("inf")
+    for kappa in shifts:
+        shifted = stiffness + kappa
+        if shifted.min() <= 0:
+            continue
+        log_k = np.log(np.append(shifted, shifted[0]))
+        rise = float(np.sum(np.maximum(np.diff(log_k), 0.0)))
+        exponent = 0.5 * rise + damping_part + 0.5 * period * kappa / np.sqrt(mass * shifted.min())
+        best = min(best, exponent)
+    return float(np.exp(best))
+
+
+def search_verdict(dominant: complex, *, max_multiplier: float, bound: float, points: int,
+                   shifts: bool) -> tuple[str, str]:
+    """"stable", "unstable" or "unknown" for a search that found `dominant`, and why.
+
+    Parameters
+    ----------
+    dominant : complex
+        The resolved multiplier of largest modulus found (0 if none).
+    max_multiplier : float
+        The top of the box searched [-].
+    bound : float
+        `growth_bound` of the solution [-].
+    points : int
+        Contour points per phase.
+    shifts : bool
+        Whether every phase of the family was searched.
+
+    Returns
+    -------
+    verdict, reason : str
+        `reason` names what the search could have missed ("" unless unknown).
+
+    Examples
+    --------
+    >>> search_verdict(0.5, max_multiplier=1e6, bound=4.6, points=24, shifts=True)
+    ('stable', '')
+    >>> search_verdict(0.5, max_multiplier=1.04, bound=4.6, points=24, shifts=True)[0]
+    'unknown'
+    >>> search_verdict(2.0, max_multiplier=1.04, bound=4.6, points=1, shifts=False)[0]
+    'unstable'
+    """
+    if abs(dominant) >= 1.0:
+        return "unstable", ""
+    gaps = []
+    if not max_multiplier >= BOUND_MARGIN * bound:
+        gaps.append(f"the box stops at |mu| = max_multiplier = {max_multiplier:g}, below "
+                    f"{BOUND_MARGIN:g} x the a-priori bound {bound:.3g} on |mu| of this orbit")
+    if points < MIN_POINTS:
+        gaps.append(f"points = {points} contour points can miss multipliers inside the box "
+                    f"(at least {MIN_POINTS} prove stability)")
+    if not shifts:
+        gaps.append("shifts=False searched one phase of the family")
+    return ("unknown", "; ".join(gaps)) if gaps else ("stable", "")
