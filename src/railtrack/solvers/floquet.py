@@ -139,8 +139,10 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
 
     Parameters
     ----------
-    solution : Solution
-        A converged solution; H / L must be an integer.
+    solution : Solution or CellSolution
+        A converged solution; H / L must be an integer.  For a `CellSolution`
+        the multipliers come from Hill's matrix of the cell and its phases
+        are per cell (`railtrack.solvers.cell_floquet`).
     theta : None, float, array_like or "scan"
         Bloch phase per sleeper of the disturbances [rad].  None: those that
         repeat every wagon (phase 0 and its N_s shifts), which a ring one
@@ -180,6 +182,15 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     >>> result.stable, bool(abs(result.dominant) < 0.1)
     (True, True)
     """
+    if hasattr(solution, "wheel"):
+        raise TypeError(
+            "floquet does not compute the multipliers of a WheelSolution (the wheels' own motion "
+            "is part of every disturbance); judge it with the time-domain ring instead: "
+            "rt.simulate_time_domain(track, train, law, ..., wheel=...)")
+    if callable(getattr(solution, "floquet", None)):
+        # a CellSolution: Hill's matrix of its cell (railtrack.solvers.cell_floquet)
+        return solution.floquet(theta, harmonics=harmonics, min_multiplier=min_multiplier,
+                                max_multiplier=max_multiplier, points=points, shifts=shifts)
     if not solution.converged:
         raise ValueError("the Floquet multipliers of an unconverged solution mean nothing: "
                          f"it did not converge ({solution.message})")

@@ -18,6 +18,12 @@ nonlinear law, `judge_stability` looks at the Floquet multipliers
 
 A linear law is not looked at: with positive damping every disturbance of
 the linear track dies out.
+
+A `CellSolution` is judged the same way with Hill's matrix of the cell
+(`railtrack.solvers.cell_floquet`): "quick" looks at Bloch phase 0 per cell
+alone (for a cell as long as the wagon, N = H / L, that is every disturbance
+that repeats every wagon), skipped where `quick_skipped`; "full" keeps the
+result on the solution (`CellSolution.stability`).
 """
 
 from __future__ import annotations
@@ -25,10 +31,13 @@ from __future__ import annotations
 import warnings
 
 from ..model.foundations import LinearFoundation
+from ..equations.cell_hill import cell_bloch_phases
+from .cell_floquet import uniform_cell
 from .floquet import Floquet, floquet
 from .solution import Solution
 
-__all__ = ["UnstableSolutionWarning", "STABILITY_MODES", "judge_stability"]
+__all__ = ["UnstableSolutionWarning", "STABILITY_MODES", "judge_stability", "quick_skipped",
+           "cell_verdict"]
 
 STABILITY_MODES = ("quick", "full", "off")
 QUICK_FLOOR = 0.9
@@ -37,6 +46,8 @@ QUICK_POINTS = 16
 """Its contour points (it wants only the multipliers near and outside the unit circle)."""
 QUICK_HARMONICS = 100
 """Above this m the quick look (its cost grows as m^3, the solve's as m^2) is skipped."""
+QUICK_CELL_SIZE = 400
+"""Above N (2m+1) rows of the cell's Hill matrix (differing sleepers) the quick look is skipped."""
 KINDS = {"real +": "a real positive one", "real -": "a real negative one",
          "complex": "a complex pair"}
 
@@ -50,7 +61,7 @@ def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floqu
 
     Parameters
     ----------
-    solution : Solution
+    solution : Solution or CellSolution
     mode : {"quick", "full", "off"}
     stacklevel : int
         Passed to `warnings.warn`, so that the warning points at the caller of `solve`.
@@ -62,8 +73,12 @@ def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floqu
     """
     if mode not in STABILITY_MODES:
         raise ValueError(f"stability must be one of {STABILITY_MODES}; got {mode!r}")
-    if mode == "off" or not solution.converged or isinstance(solution.foundation,
-                                                              LinearFoundation):
+    if mode == "off" or not solution.converged:
+        return None
+    if hasattr(solution, "cell"):
+        result = _judge_cell(solution, mode, stacklevel + 1)
+        return result if mode == "full" else None
+    if isinstance(solution.foundation, LinearFoundation):
         return None
     sleepers = float(solution.passage.wagon_length / solution.passage.sleeper_spacing)
     if mode == "quick" and abs(sleepers - round(sleepers)) > 1e-9 * sleepers:
@@ -75,6 +90,11 @@ def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floqu
     # of well-damped exponents whose refinement would cost ten solves.
     result = floquet(solution) if mode == "full" else floquet(
         solution, shifts=False, min_multiplier=QUICK_FLOOR, points=QUICK_POINTS)
+    _warn(solution, result, stacklevel + 1)
+    return result if mode == "full" else None
+
+
+def _warn(solution, result: Floquet, stacklevel: int) -> None:
     if not result.stable:
         v = float(solution.passage.speed)
         warnings.warn(UnstableSolutionWarning(
@@ -83,4 +103,57 @@ def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floqu
             "Floquet multipliers), so a train does not stay on it.  Other solutions may exist at "
             "this speed: rt.continuation finds them and rt.check_branch judges each; "
             "solve(..., stability='off') skips this check"), stacklevel=stacklevel)
-    return result if mode == "full" else None
+
+
+def _judge_cell(solution, mode: str, stacklevel: int, warn: bool = True) -> Floquet | None:
+    """`judge_stability` of a `CellSolution`: Hill's matrix of the cell (`cell_floquet`)."""
+    if all(isinstance(law, LinearFoundation) for law in solution.cell.foundations):
+        return None
+    if mode == "quick" and quick_skipped(solution):
+        return None
+    result = floquet(solution) if mode == "full" else floquet(
+        solution, shifts=False, min_multiplier=QUICK_FLOOR, points=QUICK_POINTS)
+    if warn:
+        _warn(solution, result, stacklevel + 1)
+    return result
+
+
+def quick_skipped(solution) -> bool:
+    """True where the quick look of a `CellSolution` is skipped: H/L not whole, or too costly.
+
+    A cell of identical sleepers is looked at as one sleeper (above m =
+    `QUICK_HARMONICS` skipped, as for `solve`); a cell of differing sleepers
+    has Hill matrices of N (2m+1) rows, and above `QUICK_CELL_SIZE` rows the
+    look would cost several solves.
+    """
+    sleepers = float(solution.passage.wagon_length / solution.passage.sleeper_spacing)
+    if abs(sleepers - round(sleepers)) > 1e-9 * sleepers:
+        return True
+    if uniform_cell(solution.cell):
+        return solution.harmonics > QUICK_HARMONICS
+    return solution.sleepers * (2 * solution.harmonics + 1) > QUICK_CELL_SIZE
+
+
+def cell_verdict(solution, mode: str = "quick") -> tuple[str, Floquet | None]:
+    """"stable", "unstable" or "unknown" for a `CellSolution`, without a warning.
+
+    "unstable" when a multiplier outside the unit circle was found; "stable"
+    for a cell on linear laws, or when the look covered every disturbance
+    that repeats every wagon ("full", or "quick" on a cell whose length is a
+    multiple of the wagon's H, one Bloch phase then being all of them);
+    "unknown" otherwise (unconverged, look skipped, or a quick look that saw
+    one phase of several and found nothing).  Also the `Floquet` looked at.
+    """
+    if mode not in STABILITY_MODES:
+        raise ValueError(f"stability must be one of {STABILITY_MODES}; got {mode!r}")
+    if not solution.converged:
+        return "unknown", None
+    if all(isinstance(law, LinearFoundation) for law in solution.cell.foundations):
+        return "stable", None
+    result = _judge_cell(solution, mode, 1, warn=False) if mode != "off" else None
+    if result is None:
+        return "unknown", None
+    if not result.stable:
+        return "unstable", result
+    complete = mode == "full" or cell_bloch_phases(solution.passage, solution.sleepers).size == 1
+    return ("stable" if complete else "unknown"), result
