@@ -152,3 +152,48 @@ def test_a_wheel_solution_is_refused_with_the_alternative_named():
 
     with pytest.raises(TypeError, match="simulate_time_domain"):
         rt.floquet(Wheeled())
+
+
+@pytest.mark.parametrize("stiffness", [19e6, 16e6])
+def test_differing_sleepers_match_the_rings_period_map(stiffness):
+    # sleeper 1 of 3 on a softer ballast: 19 MN/m leaves the state
+    # unstable (|mu| 2.75, not the uniform track's 2.66), 16 MN/m makes
+    # it stable (0.62); the ring linearised about the same orbit (a
+    # Newmark period map, no Hill matrix) gives the same multiplier
+    train, passage = _fold(480.0)
+    softer = rt.CubicFoundation(stiffness, 2e13, 0.8, 5000.0)
+    cell = SleeperCell.identical(passage, FOLD_LAW, 3).with_sleeper(
+        1, foundation=softer
+    )
+    state = rt.solve(FOLD_TRACK, train, cell, 19, stability="off")
+    hill = rt.floquet(state)
+    ring = rt.ring_multipliers(
+        state, elements_per_span=2, steps_per_period=600
+    )
+    assert hill.stable == ring.stable == (stiffness < 18e6)
+    assert abs(hill.dominant) == pytest.approx(abs(ring.dominant), rel=0.02)
+    assert abs(hill.dominant - ring.dominant) < 0.03 * abs(ring.dominant)
+
+
+def test_the_ring_of_an_identical_cell_is_the_ring_of_one_sleeper():
+    train, passage = _fold(480.0)
+    plain = rt.solve(FOLD_TRACK, train, FOLD_LAW, 19, stability="off")
+    cell = rt.solve(
+        FOLD_TRACK,
+        train,
+        SleeperCell.identical(passage, FOLD_LAW, 3),
+        19,
+        stability="off",
+    )
+    options = dict(elements_per_span=2, steps_per_period=300)
+    one = rt.ring_multipliers(plain, **options)
+    three = rt.ring_multipliers(cell, **options)
+    assert abs(three.dominant - one.dominant) < 1e-6 * abs(one.dominant)
+
+
+def test_the_ring_refuses_a_cell_that_does_not_divide_the_wagon():
+    train, passage = _fold(480.0)
+    cell = SleeperCell.identical(passage, rt.LinearFoundation.paper(), 4)
+    state = rt.solve(FOLD_TRACK, train, cell, 30, stability="off")
+    with pytest.raises(ValueError, match="rt.floquet"):
+        rt.ring_multipliers(state)
