@@ -197,3 +197,17 @@ def test_the_ring_refuses_a_cell_that_does_not_divide_the_wagon():
     state = rt.solve(FOLD_TRACK, train, cell, 30, stability="off")
     with pytest.raises(ValueError, match="rt.floquet"):
         rt.ring_multipliers(state)
+
+
+def test_random_support_says_unknown_where_the_quick_look_saw_one_phase():
+    # N = 3 of H / L = 30: the quick look sees 1 of the 10 phases per
+    # cell, so finding nothing proves nothing; "full" sees all ten
+    train = rt.Train.paper(speed=420.0)
+    options = dict(sleepers=3, variation=0.0, draws=1)
+    quick = rt.random_support(FOLD_TRACK, train, FOLD_LAW, **options)
+    full = rt.random_support(
+        FOLD_TRACK, train, FOLD_LAW, stability="full", **options
+    )
+    assert quick.stability.tolist() == ["unknown"]
+    assert full.stability.tolist() == ["stable"]
+    assert "1 stable, 0 unstable, 0 unknown" in full.summary()

@@ -144,7 +144,7 @@ def cell_floquet(solution, theta=None, *, harmonics: int | None = None,
     Raises
     ------
     ValueError
-        If the solution did not converged, or H / L is not an integer.
+        If the solution did not converge, or H / L is not an integer.
     NotImplementedError
         For the sleepers of a `railtrack.WheelSolution`.
     """
@@ -209,17 +209,21 @@ def _search(view, bases, m, min_multiplier, max_multiplier, points, shifts) -> l
     top = np.repeat(np.abs(np.arange(-m, m + 1)) > band, n)
     search = toeplitz[..., m - band:m + band + 1, m - band:m + band + 1]
     candidates = []
-    for base in bases:
-        phases = cell_bloch_phases(passage, n, base) if shifts else np.array([float(base)])
+    # each base with its shifts, or (shifts=False) all the bases alone as one group
+    groups = [(cell_bloch_phases(passage, n, base), np.full(cell_bloch_phases(
+        passage, n).size, float(base))) for base in bases] if shifts \
+        else [(np.mod(bases, 2.0 * np.pi), np.asarray(bases, dtype=float))]
+    for phases, labels in groups:
         # conjugation maps the exponents of phase theta onto those of -theta
         mirrored = bool(np.all(np.min(np.abs(np.mod(-phases[:, None] - phases[None, :] + np.pi,
                                                       2 * np.pi) - np.pi), axis=1) < 1e-9))
-        solved = phases[phases <= np.pi + 1e-12] if mirrored else phases
+        keep = phases <= np.pi + 1e-12 if mirrored else np.ones(phases.size, bool)
+        solved, labels = phases[keep], labels[keep]
 
         def matrix(z, rows, solved=solved):
             return cell_hill_matrix(passage, cell, search, z / period, solved[rows])
         pairs = _contour(matrix, solved.size, center, semi_axes, points, n * (2 * band + 1))
-        for phase, (values, vectors) in zip(solved, pairs):
+        for phase, base, (values, vectors) in zip(solved, labels, pairs):
             near = (np.abs(values.imag) <= np.pi + 0.5) & (values.real >= low - 0.5) \
                 & (values.real <= high + 0.5)
             padded = np.zeros((n * (2 * m + 1), vectors.shape[1]), dtype=complex)
