@@ -12,8 +12,9 @@ lcm(N, N_s) sleepers, which a ring of that length carries.
 
 The contour is summed one quadrature point at a time, so that a cell of 30
 sleepers (matrices of N (2m+1) rows) stays within `MEMORY_BYTES`.  A cell of
-identical sleepers (equal laws, one mass and pad) is today's track; its
-Hill matrix splits into N matrices of one sleeper at the phases
+identical sleepers (equal laws, one mass and pad) whose solution is the
+travelling wave (`travelling_wave`) is today's track; its Hill matrix splits
+into N matrices of one sleeper at the phases
 (theta + 2 pi r) / N per sleeper, and it is solved so, at the cost of
 `railtrack.floquet` on one sleeper (``reduce=False`` keeps the cell's matrix).
 """
@@ -31,16 +32,37 @@ from .contour import RANK_TOLERANCE, polish
 from .floquet import (EDGE, MEMORY_BYTES, RESIDUAL_LIMIT, TAIL_LIMIT, Floquet, _base_phases,
                       _distinct, _kind)
 
-__all__ = ["cell_floquet", "uniform_cell", "cell_tangent"]
+__all__ = ["cell_floquet", "uniform_cell", "travelling_wave", "cell_tangent"]
 
 
 def uniform_cell(cell) -> bool:
     """True if every sleeper of `cell` has the same (or an equal) law, mass and pad."""
     first = cell.foundations[0]
-    return (all(law is first or (type(law) is type(first) and law == first)
-                for law in cell.foundations)
+    return (all(law is first or _equal(law, first) for law in cell.foundations)
             and all(np.all(x == x[0]) for x in (cell.sleeper_mass, cell.pad_stiffness,
                                                 cell.pad_damping)))
+
+
+def _equal(law, other) -> bool:
+    try:
+        return type(law) is type(other) and bool(law == other)
+    except (TypeError, ValueError):   # a law with array fields: not compared
+        return False
+
+
+def travelling_wave(solution, tol: float = 1e-6) -> bool:
+    """True if sleeper j of the cell moves as sleeper 0 delayed by j L / v (within `tol` of the peak).
+
+    A cell of identical sleepers may also hold solutions that differ from
+    sleeper to sleeper (a pattern N sleepers long); only the travelling wave
+    is the one-sleeper track's solution.
+    """
+    c, m = solution.coefficients, solution.harmonics
+    omega = solution.passage.fundamental_frequency * np.arange(-m, m + 1)
+    delay = np.arange(solution.sleepers)[:, None] * solution.passage.sleeper_spacing \
+        / solution.passage.speed
+    shifted = c[0] * np.exp(-1j * omega * delay)
+    return bool(np.abs(c - shifted).sum(axis=1).max() <= tol * np.abs(c).sum(axis=1).max())
 
 
 def cell_tangent(solution, m: int) -> np.ndarray:
@@ -167,7 +189,7 @@ def cell_floquet(solution, theta=None, *, harmonics: int | None = None,
     b = cell_bloch_phases(passage, n).size
     bases = _base_phases(theta, b)
     view = _View(passage, solution.cell, solution.coefficients, solution.harmonics)
-    if reduce and n > 1 and uniform_cell(solution.cell):
+    if reduce and n > 1 and uniform_cell(solution.cell) and travelling_wave(solution):
         # phase theta per cell is the N phases (theta - 2 pi r) / N per sleeper of one
         # sleeper's matrix, with the same exponents; with its b shifts it is theta / N and
         # its shifts by 2 pi / lcm(N, N_s), which the one sleeper's shifts by 2 pi / N_s

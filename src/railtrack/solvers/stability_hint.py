@@ -32,7 +32,7 @@ import warnings
 
 from ..model.foundations import LinearFoundation
 from ..equations.cell_hill import cell_bloch_phases
-from .cell_floquet import uniform_cell
+from .cell_floquet import travelling_wave, uniform_cell
 from .floquet import Floquet, floquet
 from .solution import Solution
 
@@ -129,7 +129,7 @@ def quick_skipped(solution) -> bool:
     sleepers = float(solution.passage.wagon_length / solution.passage.sleeper_spacing)
     if abs(sleepers - round(sleepers)) > 1e-9 * sleepers:
         return True
-    if uniform_cell(solution.cell):
+    if uniform_cell(solution.cell) and travelling_wave(solution):
         return solution.harmonics > QUICK_HARMONICS
     return solution.sleepers * (2 * solution.harmonics + 1) > QUICK_CELL_SIZE
 
