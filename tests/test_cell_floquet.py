@@ -211,3 +211,105 @@ def test_random_support_says_unknown_where_the_quick_look_saw_one_phase():
     assert quick.stability.tolist() == ["unknown"]
     assert full.stability.tolist() == ["stable"]
     assert "1 stable, 0 unstable, 0 unknown" in full.summary()
+
+
+def _damped_law(w, v):
+    # cubic spring and a damping that grows with |w|: the tangent damping
+    # then varies along the orbit, which couples different harmonics
+    return 20e6 * w + 2e13 * w**3 + 5e3 * (1.0 + (w / 1e-3) ** 2) * v
+
+
+@pytest.mark.filterwarnings("ignore::railtrack.TruncationWarning")
+def test_hill_matrix_at_rest_is_the_jacobian_of_the_harmonic_balance():
+    # lambda = 0, theta = 0: Hill's matrix of the cell is the Jacobian of
+    # the cell's harmonic balance (cell_jacobian, real packing, other code)
+    # up to the invertible K2_n on the left of each harmonic's rows
+    from railtrack.equations.cell_harmonic_balance import (
+        cell_jacobian,
+        cell_operators,
+        pack_harmonics,
+        unpack_harmonics,
+    )
+    from railtrack.equations.cell_hill import (
+        cell_hill_matrix,
+        cell_rail_stiffness,
+    )
+    from railtrack.equations.harmonic_balance import default_samples
+    from railtrack.solvers.cell_floquet import cell_tangent
+
+    train, passage = _fold(300.0)
+    cell = SleeperCell.identical(passage, FOLD_LAW, 3).with_sleeper(
+        1, foundation=_damped_law, sleeper_mass=250.0, pad_stiffness=5e8
+    )
+    state = rt.solve(FOLD_TRACK, train, cell, 8, stability="off")
+    m, n = state.harmonics, 3
+    omega = passage.fundamental_frequency * np.arange(m + 1)
+    ops = cell_operators(
+        passage, cell.pad_stiffness, cell.pad_damping, omega
+    )
+    c = state.coefficients[:, m:]
+    jacobian = cell_jacobian(cell, c, ops, default_samples(2 * m))
+    rng = np.random.default_rng(5)
+    dc = rng.standard_normal((n, m + 1)) + 1j * rng.standard_normal(
+        (n, m + 1)
+    )
+    dc[:, 0] = dc[:, 0].real
+    change = unpack_harmonics(jacobian @ pack_harmonics(dc.T), n)
+    expected = np.linalg.solve(ops.second, change.T[..., None])[..., 0]
+
+    two_sided = np.concatenate([np.conj(dc[:, :0:-1]), dc], axis=1)
+    hill = cell_hill_matrix(passage, cell, cell_tangent(state, m), 0.0, 0.0)
+    rows = (hill @ two_sided.T.ravel()).reshape(2 * m + 1, n)[m:]
+    cell_phase = omega * n * passage.sleeper_spacing / passage.speed
+    _, second = cell_rail_stiffness(
+        passage,
+        cell.pad_stiffness,
+        cell.pad_damping,
+        1j * omega,
+        cell_phase,
+    )
+    found = np.linalg.solve(second, rows[..., None])[..., 0]
+    scale = np.abs(expected).max()
+    assert np.abs(found - expected).max() < 1e-7 * scale
+
+
+@pytest.mark.filterwarnings("ignore::railtrack.TruncationWarning")
+def test_the_derivative_of_hills_matrix_is_its_slope():
+    from railtrack.equations.cell_hill import (
+        cell_hill_derivative,
+        cell_hill_matrix,
+    )
+    from railtrack.solvers.cell_floquet import cell_tangent
+
+    train, passage = _fold(300.0)
+    cell = SleeperCell.identical(passage, FOLD_LAW, 3).with_sleeper(
+        1, foundation=_damped_law, sleeper_mass=250.0
+    )
+    state = rt.solve(FOLD_TRACK, train, cell, 8, stability="off")
+    toeplitz = cell_tangent(state, 8)
+    exponent, theta = (
+        np.array([-3.0 + 40.0j, 5.0 - 2.0j]),
+        np.array([0.3, 2.0]),
+    )
+    rng = np.random.default_rng(2)
+    v = rng.standard_normal((2, 3 * 17)) + 1j * rng.standard_normal(
+        (2, 3 * 17)
+    )
+    slope = cell_hill_derivative(
+        passage, cell, toeplitz, exponent, theta, v
+    )
+    h = 1e-4
+    ends = [
+        np.einsum(
+            "rij,rj->ri",
+            cell_hill_matrix(passage, cell, toeplitz, exponent + d, theta),
+            v,
+        )
+        for d in (h, -h, 1j * h, -1j * h)
+    ]
+    # analytic in lambda: the same slope along the real and imaginary axes
+    real = (ends[0] - ends[1]) / (2 * h)
+    imaginary = (ends[2] - ends[3]) / (2j * h)
+    scale = np.abs(real).max()
+    assert np.abs(real - imaginary).max() < 1e-6 * scale
+    assert np.abs(slope - real).max() < 1e-6 * scale
