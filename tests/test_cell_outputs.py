@@ -105,8 +105,9 @@ def test_a_cell_refuses_what_it_cannot_do():
     cell = hanging(1e-3, n=4, at=1)
     with pytest.raises(ValueError, match="newton"):
         rt.solve(TRACK, TRAIN, cell, method="fixed-point")
-    with pytest.raises(ValueError, match="Floquet"):
-        rt.solve(TRACK, TRAIN, cell, stability="full")
+    # stability="full" is computed for cells now (tests/test_cell_floquet.py)
+    with pytest.raises(ValueError, match="stability"):
+        rt.solve(TRACK, TRAIN, cell, stability="bogus")
     with pytest.raises(ValueError, match="explicit"):
         rt.solve(TRACK, TRAIN, cell, samples=256)
 

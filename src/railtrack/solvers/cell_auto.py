@@ -32,6 +32,7 @@ from .cell_newton import solve_cell
 from .cell_solution import CellSolution
 from .diagnosis import report
 from .foundation_at_rest import check_foundation_at_rest
+from .stability_hint import judge_stability
 from .truncation import auto_samples, grown_harmonics, predict_harmonics
 
 __all__ = ["cell_truncation", "solve_cell_auto", "solve_track_cell", "MAX_CELL_HARMONICS"]
@@ -130,16 +131,14 @@ def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton
                      stability: str = "quick") -> CellSolution:
     """`railtrack.solve` for a `SleeperCell`: Newton, an explicit m or "auto".
 
-    Arguments as `railtrack.solve`.  Stability is not judged for a cell (its
-    Floquet multipliers are not computed): "quick" and "off" skip it, "full"
-    is refused.  `split` and `fallback` do not apply.
+    Arguments as `railtrack.solve`.  Stability is judged as for one sleeper,
+    with Hill's matrix of the cell (`railtrack.solvers.stability_hint`):
+    "quick" warns, "full" keeps the multipliers on the result's `stability`.
+    `split` and `fallback` do not apply.
     """
     if method != "newton":
         raise ValueError(f"a SleeperCell is solved by method='newton' only; got {method!r}")
-    if stability == "full":
-        raise ValueError("stability='full' is not available for a SleeperCell (its Floquet "
-                         "multipliers are not computed); use 'quick' or 'off'")
-    if stability not in ("quick", "off"):
+    if stability not in ("quick", "full", "off"):
         raise ValueError(f'stability must be "quick", "full" or "off"; got {stability!r}')
     passage = Passage(track, train)
     _compare_with_track(track, cell)
@@ -170,10 +169,12 @@ def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton
         if result.converged:
             result = replace(result, truncation_error=cell_truncation(result)[0])
         limit = WARN_TRUNCATION
-    return report(result, strict, limit,
-                  f"harmonics={result.harmonics}: the estimated truncation error is "
-                  f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
-                  f"larger harmonics")
+    result = report(result, strict, limit,
+                    f"harmonics={result.harmonics}: the estimated truncation error is "
+                    f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
+                    f"larger harmonics")
+    judged = judge_stability(result, stability, stacklevel=4)
+    return result if judged is None else replace(result, stability=judged)
 
 
 def _compare_with_track(track, cell) -> None:

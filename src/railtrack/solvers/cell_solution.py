@@ -53,6 +53,8 @@ class CellSolution:
         Non-empty where `rail_displacement` and `rail_bending_moment` do not
         hold (the sleepers of a `railtrack.WheelSolution`): why, raised as the
         error's message.
+    stability : Floquet or None
+        The Floquet multipliers when solved with ``stability="full"`` (`floquet`).
     """
 
     passage: Passage
@@ -69,6 +71,15 @@ class CellSolution:
     message: str
     truncation_error: float = float("nan")
     rail_field_note: str = ""
+    stability: Any = None
+
+    def floquet(self, theta=None, **options):
+        """The Floquet multipliers of this solution (`railtrack.solvers.cell_floquet.cell_floquet`).
+
+        Phases are per cell; `options` as `railtrack.floquet`.  ``rt.floquet(s)`` calls this.
+        """
+        from .cell_floquet import cell_floquet
+        return cell_floquet(self, theta, **options)
 
     @property
     def sleepers(self) -> int:

@@ -89,8 +89,10 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
 
     Parameters
     ----------
-    solution : Solution
-        A converged solution; H / L must be an integer.
+    solution : Solution or CellSolution
+        A converged solution; H / L must be an integer.  For a `CellSolution`
+        the multipliers come from Hill's matrix of the cell and its phases
+        are per cell (`railtrack.solvers.cell_floquet`).
     theta : None, float, array_like or "scan"
         Bloch phase per sleeper of the disturbances [rad].  None: those that
         repeat every wagon (phase 0 and its N_s shifts), which a ring one
@@ -150,12 +152,21 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
                         f"pass {name.lower()}.solution(i) for one of them (rt.check_branch "
                         "judges every point of a Branch, sweep(..., stability='full') every "
                         "member of a sweep)")
-    if not all(hasattr(solution, name) for name in ("converged", "passage", "coefficients")):
-        raise TypeError("floquet takes a converged railtrack.Solution (from rt.solve); got "
-                        f"{type(solution).__name__}")
     if isinstance(points, bool) or not isinstance(points, (int, np.integer)) or points < 1:
         raise ValueError(f"points must be an integer >= 1 (contour quadrature points; "
                          f"{MIN_POINTS} or more can prove stability); got {points!r}")
+    if hasattr(solution, "wheel"):
+        raise TypeError(
+            "floquet does not compute the multipliers of a WheelSolution (the wheels' own motion "
+            "is part of every disturbance); judge it with the time-domain ring instead: "
+            "rt.simulate_time_domain(track, train, law, ..., wheel=...)")
+    if callable(getattr(solution, "floquet", None)):
+        # a CellSolution: Hill's matrix of its cell (railtrack.solvers.cell_floquet)
+        return solution.floquet(theta, harmonics=harmonics, min_multiplier=min_multiplier,
+                                max_multiplier=max_multiplier, points=points, shifts=shifts)
+    if not all(hasattr(solution, name) for name in ("converged", "passage", "coefficients")):
+        raise TypeError("floquet takes a converged railtrack.Solution (from rt.solve); got "
+                        f"{type(solution).__name__}")
     if not solution.converged:
         raise ValueError("the Floquet multipliers of an unconverged solution mean nothing: "
                          f"it did not converge ({solution.message})")

@@ -41,11 +41,12 @@ finite.  Several shifts are tried and the least bound kept (each is a bound).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-__all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "BOUND_MARGIN", "growth_bound", "search_verdict"]
+__all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "BOUND_MARGIN", "growth_bound", "search_verdict",
+           "with_verdict"]
 
 VERDICTS = ("stable", "unstable", "unknown")
 MIN_POINTS = 16
@@ -138,7 +139,10 @@ def growth_bound(solution) -> float:
     """An upper bound on |mu| per period T = H / v of any disturbance of `solution` [-].
 
     From the energy of the linearised track (module docstring); inf if the
-    foundation's tangent along the orbit is not finite.
+    foundation's tangent along the orbit is not finite.  For a `CellSolution`
+    the energy is summed over the cell's sleepers: its rate is at most the
+    largest of the sleepers' rates at each instant, so the bound integrates
+    that pointwise largest rate (for one sleeper, the single-sleeper bound).
 
     Examples
     --------
@@ -149,33 +153,64 @@ def growth_bound(solution) -> float:
     """
     period, m = float(solution.period), int(solution.harmonics)
     samples = max(BOUND_SAMPLES, 16 * m)
-    # w and w' over one period at t_j = j T / N, by an inverse FFT of c_0..c_m
-    spectrum = np.zeros(samples // 2 + 1, dtype=complex)
-    spectrum[: m + 1] = solution.coefficients[m:]
-    omega = np.asarray(solution.frequencies[m:], dtype=float)
-    w = np.fft.irfft(spectrum, samples) * samples
-    spectrum[: m + 1] *= 1j * omega
-    v = np.fft.irfft(spectrum, samples) * samples
-    stiffness, damping = (np.broadcast_to(np.asarray(part, dtype=float), w.shape)
-                          for part in solution.foundation.tangent(w, v))
-    if not (np.all(np.isfinite(stiffness)) and np.all(np.isfinite(damping))):
+    cell = getattr(solution, "cell", None)
+    rows = np.atleast_2d(solution.coefficients)[:, m:]
+    laws = [solution.foundation] if cell is None else list(cell.foundations)
+    masses = np.broadcast_to(np.asarray(
+        solution.passage.sleeper_mass if cell is None else cell.sleeper_mass, float), len(laws))
+    omega = np.asarray(solution.frequencies, dtype=float)[-(m + 1):]
+    increments = []
+    for c, law, mass in zip(rows, laws, masses):
+        # w and w' over one period at t_j = j T / N, by an inverse FFT of c_0..c_m
+        spectrum = np.zeros(samples // 2 + 1, dtype=complex)
+        spectrum[: m + 1] = c
+        w = np.fft.irfft(spectrum, samples) * samples
+        spectrum[: m + 1] *= 1j * omega
+        v = np.fft.irfft(spectrum, samples) * samples
+        stiffness, damping = (np.broadcast_to(np.asarray(part, dtype=float), w.shape)
+                              for part in law.tangent(w, v))
+        if not (np.all(np.isfinite(stiffness)) and np.all(np.isfinite(damping))):
+            return float("inf")
+        increments.append(_least_increments(stiffness, damping, float(mass), period))
+    if any(part is None for part in increments):
         return float("inf")
-    mass = float(solution.passage.sleeper_mass)
-    damping_part = float(np.mean(np.maximum(-damping, 0.0))) * period / mass
+    return float(np.exp(np.sum(np.max(increments, axis=0))))
+
+
+def _least_increments(stiffness: np.ndarray, damping: np.ndarray, mass: float,
+                      period: float) -> np.ndarray | None:
+    """Per sample, the growth of log E / 2 over the shift kappa with the least total.
+
+    1/2 (rise of log k~)_+ + max(-d, 0) dt / m_s + dt kappa / (2 sqrt(m_s min k~)),
+    whose sum over the period is log of the bound (module docstring).
+    """
+    dt = period / stiffness.size
     low, high = float(stiffness.min()), float(stiffness.max())
     shifts = [0.0] if low > 0 else []
     spread = max(high - low, abs(high), np.finfo(float).tiny)
     shifts += [max(-low, 0.0) + f * spread for f in SHIFT_FRACTIONS]
-    best = float("inf")
+    best, chosen = float("inf"), None
     for kappa in shifts:
         shifted = stiffness + kappa
         if shifted.min() <= 0:
             continue
         log_k = np.log(np.append(shifted, shifted[0]))
-        rise = float(np.sum(np.maximum(np.diff(log_k), 0.0)))
-        exponent = 0.5 * rise + damping_part + 0.5 * period * kappa / np.sqrt(mass * shifted.min())
-        best = min(best, exponent)
-    return float(np.exp(best))
+        steps = (0.5 * np.maximum(np.diff(log_k), 0.0) + np.maximum(-damping, 0.0) * dt / mass
+                 + 0.5 * dt * kappa / np.sqrt(mass * shifted.min()))
+        if steps.sum() < best:
+            best, chosen = float(steps.sum()), steps
+    return chosen
+
+
+def with_verdict(result: Floquet, solution, *, max_multiplier: float, points: int,
+                 shifts: bool) -> Floquet:
+    """`result` with its verdict judged by `search_verdict` (the bound computed where it counts)."""
+    bound = growth_bound(solution) if abs(result.dominant) < 1 and shifts else float("nan")
+    verdict, gaps = search_verdict(result.dominant, max_multiplier=max_multiplier, bound=bound,
+                                   points=int(points), shifts=shifts)
+    words = result.message.split(":", 1)[-1]
+    message = f"{verdict}:{words}" + (f"; none outside the unit circle, but {gaps}" if gaps else "")
+    return replace(result, verdict=verdict, bound=bound, message=message)
 
 
 def search_verdict(dominant: complex, *, max_multiplier: float, bound: float, points: int,

@@ -18,6 +18,12 @@ nonlinear law, `judge_stability` looks at the Floquet multipliers
 
 A linear law is not looked at: with positive damping every disturbance of
 the linear track dies out.
+
+A `CellSolution` is judged the same way with Hill's matrix of the cell
+(`railtrack.solvers.cell_floquet`): "quick" looks at Bloch phase 0 per cell
+alone (for a cell as long as the wagon, N = H / L, that is every disturbance
+that repeats every wagon), skipped where `quick_skipped`; "full" keeps the
+result on the solution (`CellSolution.stability`).
 """
 
 from __future__ import annotations
@@ -25,11 +31,13 @@ from __future__ import annotations
 import warnings
 
 from ..model.foundations import LinearFoundation
+from ..equations.cell_hill import cell_bloch_phases
+from .cell_floquet import travelling_wave, uniform_cell
 from .floquet import Floquet, floquet
 from .solution import Solution
 
 __all__ = ["UnstableSolutionWarning", "STABILITY_MODES", "judge_stability", "stability_look",
-           "unstable_message"]
+           "unstable_message", "quick_skipped", "cell_verdict"]
 
 STABILITY_MODES = ("quick", "full", "off")
 QUICK_FLOOR = 0.9
@@ -38,6 +46,8 @@ QUICK_POINTS = 16
 """Its contour points (it wants only the multipliers near and outside the unit circle)."""
 QUICK_HARMONICS = 100
 """Above this m the quick look (its cost grows as m^3, the solve's as m^2) is skipped."""
+QUICK_CELL_SIZE = 400
+"""Above N (2m+1) rows of the cell's Hill matrix (differing sleepers) the quick look is skipped."""
 KINDS = {"real +": "a real positive one", "real -": "a real negative one",
          "complex": "a complex pair"}
 
@@ -57,6 +67,8 @@ def stability_look(solution: Solution, mode: str) -> tuple[str, Floquet | None]:
         raise ValueError(f"stability must be one of {STABILITY_MODES}; got {mode!r}")
     if mode == "off" or not solution.converged:
         return "unknown", None
+    if hasattr(solution, "cell"):
+        return cell_verdict(solution, mode)
     if isinstance(solution.foundation, LinearFoundation):
         return "stable", None
     sleepers = float(solution.passage.wagon_length / solution.passage.sleeper_spacing)
@@ -84,7 +96,7 @@ def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floqu
 
     Parameters
     ----------
-    solution : Solution
+    solution : Solution or CellSolution
     mode : {"quick", "full", "off"}
     stacklevel : int
         Passed to `warnings.warn`, so that the warning points at the caller of `solve`.
@@ -101,3 +113,47 @@ def judge_stability(solution: Solution, mode: str, stacklevel: int = 3) -> Floqu
             "this speed: rt.continuation finds them and rt.check_branch judges each; "
             "solve(..., stability='off') skips this check"), stacklevel=stacklevel)
     return result if mode == "full" else None
+
+
+def quick_skipped(solution) -> bool:
+    """True where the quick look of a `CellSolution` is skipped: H/L not whole, or too costly.
+
+    A cell of identical sleepers is looked at as one sleeper (above m =
+    `QUICK_HARMONICS` skipped, as for `solve`); a cell of differing sleepers
+    has Hill matrices of N (2m+1) rows, and above `QUICK_CELL_SIZE` rows the
+    look would cost several solves.
+    """
+    sleepers = float(solution.passage.wagon_length / solution.passage.sleeper_spacing)
+    if abs(sleepers - round(sleepers)) > 1e-9 * sleepers:
+        return True
+    if uniform_cell(solution.cell) and travelling_wave(solution):
+        return solution.harmonics > QUICK_HARMONICS
+    return solution.sleepers * (2 * solution.harmonics + 1) > QUICK_CELL_SIZE
+
+
+def cell_verdict(solution, mode: str = "quick") -> tuple[str, Floquet | None]:
+    """"stable", "unstable" or "unknown" for a `CellSolution`, without a warning.
+
+    "stable" for a cell on linear laws, or when the look covered every
+    disturbance that repeats every wagon ("full", or "quick" on a cell whose
+    length is a multiple of the wagon's H, one Bloch phase per cell then
+    being all of them) and `railtrack.Floquet.verdict` says so; "unknown"
+    where nothing is looked at (unconverged, "off", look skipped) or the
+    look cannot tell.  Also the `Floquet` looked at.
+    """
+    if mode not in STABILITY_MODES:
+        raise ValueError(f"stability must be one of {STABILITY_MODES}; got {mode!r}")
+    if not solution.converged:
+        return "unknown", None
+    if all(isinstance(law, LinearFoundation) for law in solution.cell.foundations):
+        return "stable", None
+    if mode == "off" or (mode == "quick" and quick_skipped(solution)):
+        return "unknown", None
+    if mode == "full":
+        result = floquet(solution)
+    else:
+        # one phase per cell is all of them when the cell holds whole wagons
+        complete = cell_bloch_phases(solution.passage, solution.sleepers).size == 1
+        result = floquet(solution, shifts=complete, min_multiplier=QUICK_FLOOR,
+                         points=QUICK_POINTS)
+    return result.verdict, result

@@ -15,12 +15,20 @@ For each draw the result keeps the largest rail-seat load over the
 sleepers and the period, and the rail's largest sagging moment along the
 cell: the moment under each wheel, at 8 points a span (the sagging peak
 of a span is under a wheel, `railtrack.equations.moment`).
+
+Harmonic balance finds unstable periodic states as readily as stable ones,
+and a train does not stay on an unstable one (its peaks can be far from
+what the track carries).  Each draw is judged by the Floquet multipliers of
+its cell (`railtrack.solvers.stability_hint.cell_verdict`): "unstable",
+"stable" or "unknown", counted in `RandomSupport.summary`; any unstable draw
+raises one `UnstableSolutionWarning`.
 """
 
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
+import warnings
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -30,6 +38,7 @@ from ..model.passage import Passage
 from ..model.validation import require_non_negative
 from ..solvers.arguments import require_count
 from ..solvers.cell_auto import solve_track_cell
+from ..solvers.stability_hint import UnstableSolutionWarning, cell_verdict
 
 __all__ = ["RandomSupport", "random_support", "scaled_law", "lognormal_factors"]
 
@@ -82,6 +91,8 @@ class RandomSupport:
         Largest sagging rail moment along the cell [N m].
     converged : ndarray of bool, shape (draws,)
     harmonics : ndarray of int, shape (draws,)
+    stability : ndarray of str, shape (draws,)
+        Each draw's state: "stable", "unstable" or "unknown" (module docstring).
     """
 
     variation: float
@@ -90,6 +101,19 @@ class RandomSupport:
     peak_moment: np.ndarray
     converged: np.ndarray
     harmonics: np.ndarray
+    stability: np.ndarray = field(default_factory=lambda: np.empty(0, dtype="<U8"))
+
+    def stability_counts(self) -> dict[str, int]:
+        """How many draws are "stable", "unstable" and "unknown"."""
+        return {key: int(np.sum(self.stability == key))
+                for key in ("stable", "unstable", "unknown")}
+
+    def summary(self) -> str:
+        """One line: draws, converged, and the count of stable, unstable and unknown states."""
+        counts = self.stability_counts()
+        return (f"{self.converged.size} draws (variation {self.variation:g}): "
+                f"{int(self.converged.sum())} converged; {counts['stable']} stable, "
+                f"{counts['unstable']} unstable, {counts['unknown']} unknown")
 
     def quantiles(self, q=(0.5, 0.95, 0.99)) -> dict[str, np.ndarray]:
         """Quantiles of the peak seat load [N] and moment [N m] over the converged draws.
@@ -117,7 +141,8 @@ def _peaks(solution) -> tuple[float, float]:
 
 
 def random_support(track, train, foundation, *, sleepers: int = 30, variation: float = 0.3,
-                   draws: int = 100, seed: int = 0, harmonics="auto") -> RandomSupport:
+                   draws: int = 100, seed: int = 0, harmonics="auto",
+                   stability: str = "quick") -> RandomSupport:
     """Monte Carlo over cells of `sleepers` sleepers with lognormal ballast stiffness.
 
     Parameters
@@ -136,6 +161,13 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
         For ``numpy.random.default_rng``, >= 0.
     harmonics : int or "auto"
         As `railtrack.solve`.
+    stability : {"quick", "full", "off"}
+        How each draw is judged (`railtrack.solvers.stability_hint.cell_verdict`):
+        "quick" looks at Bloch phase 0 per cell (every disturbance that repeats
+        every wagon when N is a multiple of H / L; skipped, "unknown", for a
+        cell of differing sleepers whose Hill matrix has more than
+        `railtrack.solvers.stability_hint.QUICK_CELL_SIZE` rows, e.g. 30 sleepers at m > 6), "full" at every
+        phase (tens of solves' cost), "off" marks every draw "unknown".
 
     Returns
     -------
@@ -158,11 +190,19 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
     base = SleeperCell.identical(passage, foundation, sleepers)
     seat, moment = np.full(draws, np.nan), np.full(draws, np.nan)
     converged, used = np.zeros(draws, bool), np.zeros(draws, int)
+    verdicts = np.full(draws, "unknown", dtype="<U8")
     for k, row in enumerate(factors):
         cell = dataclasses.replace(
             base, foundations=tuple(scaled_law(law, x) for law, x in zip(base.foundations, row)))
-        solution = solve_track_cell(track, train, cell, harmonics)
+        solution = solve_track_cell(track, train, cell, harmonics, stability="off")
         converged[k], used[k] = solution.converged, solution.harmonics
+        verdicts[k] = cell_verdict(solution, stability)[0]
         if solution.converged:
             seat[k], moment[k] = _peaks(solution)
-    return RandomSupport(float(variation), factors, seat, moment, converged, used)
+    result = RandomSupport(float(variation), factors, seat, moment, converged, used, verdicts)
+    if np.any(verdicts == "unstable"):
+        warnings.warn(UnstableSolutionWarning(
+            f"{int(np.sum(verdicts == 'unstable'))} of {draws} draws are unstable periodic "
+            "states (RandomSupport.stability): a train does not stay on them, and their peaks "
+            f"need not be what the track carries. {result.summary()}"), stacklevel=2)
+    return result

@@ -28,7 +28,6 @@ stable to the disturbances that fit the ring.
 
 from __future__ import annotations
 
-import numbers
 from dataclasses import dataclass
 
 import numpy as np

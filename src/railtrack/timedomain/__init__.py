@@ -6,7 +6,8 @@ stepped by Newmark's scheme (`newmark`) until each period repeats the last
 step and its error (`timestep`), the run's cost estimated beforehand
 (`runcost`), the ring started from a harmonic-balance solution
 (`ring_state`), its forces and moments (`ring_outputs`; every sleeper's,
-`ring_fields`), a cell of differing sleepers laid along it (`ring_cell`),
+`ring_fields`), a cell of differing sleepers laid along it (`ring_cell`; its linearised
+map, `cell_span_map`),
 wheels of mass on Hertz springs over a rail-top profile (`ring_wheels`,
 `ring_contact`), its result (`td_solution`) and the spectrum of a record
 (`spectrum`).

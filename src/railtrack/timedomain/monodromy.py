@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .fem import RingMesh
+from .cell_span_map import cell_span_map
 from .span_map import RingSpanMap, ring_span_map
 
 __all__ = ["SLEEPER_SHARE", "RingSpanMap", "RingMultipliers", "ring_span_map", "ring_multipliers"]
@@ -111,8 +112,10 @@ def ring_multipliers(solution, *, wagons: int = 1, elements_per_span: int = 4,
 
     Parameters
     ----------
-    solution : railtrack.Solution
+    solution : railtrack.Solution or railtrack.CellSolution
         A converged periodic solution; its track's H / L must be an integer.
+        For a cell, the ring carries the cell (`railtrack.timedomain.cell_span_map`)
+        and N must divide H / L.
     wagons : int
         Wagons on the ring (the train tiled): Bloch phases 2 pi k / wagons.
     elements_per_span : int
@@ -142,9 +145,17 @@ def ring_multipliers(solution, *, wagons: int = 1, elements_per_span: int = 4,
     >>> result.stable, round(abs(result.dominant), 2)
     (False, 2.01)
     """
-    span = ring_span_map(solution, wagons=wagons, elements_per_span=elements_per_span,
-                         steps_per_period=steps_per_period)
+    if hasattr(solution, "wheel"):
+        raise TypeError("ring_multipliers does not linearise a WheelSolution (the wheels' own "
+                        "motion is part of every disturbance); run the ring itself instead: "
+                        "rt.simulate_time_domain(track, train, law, ..., wheel=...)")
+    # a CellSolution: the map over one cell time, shifted back N sleepers (cell_span_map)
+    cell = hasattr(solution, "cell")
+    span = (cell_span_map if cell else ring_span_map)(
+        solution, wagons=wagons, elements_per_span=elements_per_span,
+        steps_per_period=steps_per_period)
     mesh, per_wagon, matrix = span.mesh, span.sleepers_per_wagon, span.matrix
+    maps_per_wagon = per_wagon // (solution.sleepers if cell else 1)
     rows = _wagon_dofs(mesh, wagons, 0)
     columns = [_wagon_dofs(mesh, wagons, j) for j in range(wagons)]
     half = rows.size // 2
@@ -163,7 +174,7 @@ def ring_multipliers(solution, *, wagons: int = 1, elements_per_span: int = 4,
         on_rail = (power[deflection_rows].sum(axis=0)
                    + mesh.element_length**2 * power[deflection_rows + 1].sum(axis=0))
         share.append(on_sleepers / (on_sleepers + on_rail))
-        mu.append(np.exp(-1j * theta) * nu.astype(complex) ** per_wagon)
+        mu.append(np.exp(-1j * theta) * nu.astype(complex) ** maps_per_wagon)
         phase.append(np.full(nu.size, theta))
     mu, share, phase = (np.concatenate(x) for x in (mu, share, phase))
     order = np.argsort(-np.abs(mu), kind="stable")
