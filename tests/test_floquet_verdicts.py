@@ -9,7 +9,7 @@ Independent truths: the time-domain ring's linearised monodromy
 (`rt.ring_multipliers`, Newmark, no Hill's matrix) for the multipliers that
 a narrow search misses; the linear law, on which no disturbance grows (the
 energy bound must give exactly 1); and the ring's multipliers lying under
-the a-priori bound at every speed tried.
+the a-priori estimate at every speed tried.
 """
 
 import warnings

@@ -26,7 +26,7 @@ the verdict.
 
 The verdict is "unstable" when a resolved multiplier lies outside the unit
 circle, "stable" only when none does and the search could not have missed
-one (its box reaches above the a-priori bound on |mu|, its contour has
+one (its box reaches above the a-priori estimate of |mu|, its contour has
 points enough, every phase was searched), and "unknown" otherwise
 (`railtrack.solvers.floquet_verdict`).
 """
@@ -108,7 +108,7 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     min_multiplier, max_multiplier : float
         The multipliers looked for: min <= |mu| <= max [-].  A multiplier
         above the box is not looked for: the verdict is "stable" only if
-        max_multiplier reaches twice above the a-priori bound on |mu| of the
+        max_multiplier reaches twice above the a-priori estimate of |mu| of the
         orbit (`railtrack.solvers.floquet_verdict.growth_bound`, 4.6 on the
         fold track at 600 m/s), else "unknown" when nothing unstable is found.
     points : int
