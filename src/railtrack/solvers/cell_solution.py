@@ -47,8 +47,9 @@ class CellSolution:
     residual_history : ndarray
     message : str
     truncation_error : float
-        Estimated max-norm error of the sleepers' displacements from keeping m
-        harmonics, relative to the largest peak in the cell [-]; NaN if not estimated.
+        Estimated max-norm error from keeping m harmonics, relative to the
+        largest peak in the cell, of the sleepers' displacements or of the
+        rail-seat loads, whichever is larger [-]; NaN if not estimated.
     rail_field_note : str
         Non-empty where `rail_displacement` and `rail_bending_moment` do not
         hold (the sleepers of a `railtrack.WheelSolution`): why, raised as the
