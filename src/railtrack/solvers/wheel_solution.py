@@ -131,8 +131,9 @@ class WheelSolution:
         omega = 2 * np.pi * self.grid / self.period
         fluctuation = self._series(-self.contact_harmonics / (self.wheel.unsprung_mass
                                                               * omega**2), t)
-        return fluctuation + self._mean_height().reshape((-1,) + (1,) * np.ndim(t))
+        return fluctuation + self._mean_height.reshape((-1,) + (1,) * np.ndim(t))
 
+    @cached_property
     def _mean_height(self) -> np.ndarray:
         # The mean of the rail under a moving wheel takes only the wheels' static
         # loads and the sleepers' reactions (a varying force reaches the wheel at
@@ -144,7 +145,9 @@ class WheelSolution:
         t = np.arange(1024) * self.period / 1024
         path = self.wheel_position(t)
         under = self.sleepers._field(np.broadcast_to(t, path.shape), path, 0)
-        return under.mean(axis=-1) - self._anchor_sag - self.lift
+        height = under.mean(axis=-1) - self._anchor_sag - self.lift
+        height.setflags(write=False)              # computed once and shared
+        return height
 
     @cached_property
     def _anchor_sag(self) -> float:
