@@ -16,6 +16,7 @@ import pytest
 
 import railtrack as rt
 from railtrack.model.passage import Passage
+from railtrack.solvers.cell_auto import cell_truncation_errors
 
 TRACK, TRAIN = rt.Track.paper(), rt.Train.paper()
 PAPER = Passage(TRACK, TRAIN)
@@ -52,11 +53,16 @@ def test_identical_cell_gives_todays_rail_field_and_moment(identical):
                                atol=1e-9 * np.abs(today.foundation_force(tt)).max())
 
 
+VOID_ACCURACY = 5e-3
+"""The seat load of a hanging sleeper converges slowly (its kinks where the sleeper lands):
+at 1e-3 it needs m > 400, more than "auto" takes for a cell."""
+
+
 @pytest.fixture(scope="module")
 def void():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        return rt.solve(TRACK, TRAIN, hanging(1e-3))
+        return rt.solve(TRACK, TRAIN, hanging(1e-3), accuracy=VOID_ACCURACY)
 
 
 def test_rail_field_at_each_sleeper_is_the_rail_above_it(void):
@@ -87,10 +93,12 @@ def test_the_foundations_carry_the_trains_weight(void):
 def test_the_truncation_estimate_is_the_error_of_keeping_m(void):
     finer = rt.solve(TRACK, TRAIN, void.cell, 2 * void.harmonics)
     t = void.one_period(2048)[0]
-    error = np.abs(finer.sleeper_displacement(t) - void.sleeper_displacement(t)).max() \
-        / np.abs(finer.sleeper_displacement(t)).max()
-    assert void.truncation_error <= 1e-3
-    assert 0.5 < void.truncation_error / error < 2.0
+    estimates = cell_truncation_errors(void)[0]
+    assert void.truncation_error == max(estimates.values()) <= VOID_ACCURACY
+    for output in ("sleeper_displacement", "rail_seat_load"):
+        truth = getattr(finer, output)(t)
+        error = np.abs(truth - getattr(void, output)(t)).max() / np.abs(truth).max()
+        assert 0.5 < estimates[output] / error < 2.0, output
 
 
 def test_a_gap_too_wide_to_close_carries_nothing():

@@ -36,6 +36,7 @@ from numpy.typing import ArrayLike
 
 from ..model.passage import Passage
 from .cell_receptance import cell_moving_load, floquet_parts
+from .positions import check_positions
 from .receptance import bending_wavenumber
 
 __all__ = ["cell_offset_receptance", "cell_rail_field_coefficients"]
@@ -90,8 +91,32 @@ def _bernoulli4(u, derivative):
     return 12 * u**2 - 12 * u + 2.0
 
 
+def _kernel_sums(k, theta, span: float, seat_force: np.ndarray) -> np.ndarray:
+    """sum_j w(d_j) q_j for the four d-shapes of the kernel, per sleeper j0 behind x.
+
+    With x between sleepers j0 and j0 + 1 (s = x - j0 L in [0, L]), sleeper
+    j = j0 - r (mod N) is d = s + rL behind x, wrapped with e^{i theta} when
+    j0 - r < 0.  Its kernel is a combination of cos kd, sin kd, e^{-kd} and
+    e^{-k(Lambda-d)}, each a product of a factor of s and one of r (every
+    factor <= 1: nothing overflows).  Returns the sums over r of the r
+    factors (cos krL, sin krL, e^{-krL}, e^{-k(N-1-r)L}) times the twisted
+    seat forces, shape (4, N, W): index j0.
+    """
+    n = seat_force.shape[0]
+    r = np.arange(n)[:, None] * span * k                                  # (N, W) krL
+    shapes = np.stack([np.cos(r), np.sin(r), np.exp(-r), np.exp(r - (n - 1) * span * k)])
+    twist = np.exp(1j * theta)
+    sums = np.empty((4, n, k.size), dtype=complex)
+    for j0 in range(n):
+        source = (j0 - np.arange(n)) % n                                  # sleeper j of each r
+        q = seat_force[source] * np.where((np.arange(n) > j0)[:, None], twist, 1.0)
+        sums[:, j0] = np.einsum("arw,rw->aw", shapes, q)
+    return sums
+
+
 def cell_rail_field_coefficients(passage: Passage, omega: ArrayLike, sleeper: np.ndarray,
-                                 seat_force: np.ndarray, pad, x: ArrayLike):
+                                 seat_force: np.ndarray, pad, x: ArrayLike, *,
+                                 derivatives: tuple[int, ...] = (0, 2)):
     """Fourier coefficients of the rail's displacement and curvature at x along the cell.
 
     Parameters
@@ -108,46 +133,77 @@ def cell_rail_field_coefficients(passage: Passage, omega: ArrayLike, sleeper: np
     pad : ndarray, shape (N,)
         k1_j [N/m], for the rail above sleeper 0 at omega = 0.
     x : array_like, shape (X,)
-        Positions from sleeper 0 in the direction of travel [m], any real value.
+        Positions from sleeper 0 in the direction of travel [m], finite and
+        within the bound of `railtrack.equations.positions.check_positions`.
+    derivatives : tuple of {0, 2}
+        Which to return: 0 the displacement, 2 the curvature.
 
     Returns
     -------
-    (ndarray, ndarray), shape (X, W) each
-        Complex coefficients of w_r(x, t) [m] and of its x-curvature [1/m].
+    tuple of ndarray, shape (X, W) each
+        Complex coefficients of w_r(x, t) [m] and/or of its x-curvature [1/m],
+        in the order of `derivatives`.
+
+    Raises
+    ------
+    ValueError
+        For x so far that round-off leaves the phases no digits (`check_positions`).
+
+    Notes
+    -----
+    The sum over the cell's sleepers, ``-sum_j eta(x - jL) p_{j,n}``, is
+    separated (`_kernel_sums`) into N sums per harmonic, made once, and a few
+    factors per x: the work and memory grow like X W, not X N W.
     """
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
+    if any(d not in (0, 2) for d in derivatives):
+        raise ValueError(f"derivatives must hold 0 and/or 2; got {derivatives!r}")
     n = sleeper.shape[0]
     span, cell = passage.sleeper_spacing, n * passage.sleeper_spacing
     x = np.atleast_1d(np.asarray(x, dtype=float))
+    check_positions(passage, omega, x)
     wraps = np.floor(x / cell)
     inside = np.clip(x - wraps * cell, 0.0, cell)
-    offsets = inside[:, None] - np.arange(n) * span                      # (X, N)
-    behind = offsets < 0
+    behind = np.minimum(np.floor(inside / span), n - 1).astype(int)         # j0
+    s = np.clip(inside - behind * span, 0.0, span)[:, None]
     theta = omega * cell / passage.speed
-    displacement = np.zeros((x.size, omega.size), dtype=complex)
-    curvature = np.zeros_like(displacement)
+    out = {d: np.zeros((x.size, omega.size), dtype=complex) for d in derivatives}
     moving = omega > 0
     if np.any(moving):
-        w = omega[moving]
-        for which, out in ((0, displacement), (2, curvature)):
-            kernel = cell_offset_receptance(passage, w, n, (offsets + behind * cell).ravel(),
-                                            which).reshape(x.size, n, w.size)
-            kernel = np.where(behind[..., None], np.exp(1j * theta[moving]) * kernel, kernel)
-            out[:, moving] = -np.einsum("xjw,jw->xw", kernel, seat_force[:, moving])
-        load = cell_moving_load(passage, w, 1)[:, 0] * np.exp(-1j * np.outer(inside, w)
+        w, phase = omega[moving], theta[moving]
+        k = bending_wavenumber(passage, w)
+        cos_, sin_, near, far = (a[behind] for a in _kernel_sums(k, phase, span,
+                                                                seat_force[:, moving]))
+        ks = s * k
+        back, kc = np.exp(-1j * phase), k * cell
+        trig_den = -2.0 * np.sin(0.5 * (kc + phase)) * np.sin(0.5 * (kc - phase))
+        hyp_den = np.expm1(-kc) ** 2 + 4.0 * np.exp(-kc) * np.sin(0.5 * phase) ** 2
+        cos_s, sin_s = np.cos(ks), np.sin(ks)
+        cos_d = cos_s * cos_ - sin_s * sin_
+        sin_d = sin_s * cos_ + cos_s * sin_
+        trig = (np.sin(kc) * cos_d + (back - np.cos(kc)) * sin_d) / trig_den
+        hyp = (-np.expm1(-kc - 1j * phase) * np.exp(-ks) * near
+               + (np.expm1(-1j * phase) - np.expm1(-kc)) * np.exp(-(span - s) * k) * far
+               ) / hyp_den
+        load = cell_moving_load(passage, w, 1)[:, 0] * np.exp(-1j * inside[:, None] * w
                                                                / passage.speed)
-        displacement[:, moving] += load
-        curvature[:, moving] -= (w / passage.speed) ** 2 * load
+        ei = passage.rail_bending_stiffness
+        if 0 in out:
+            out[0][:, moving] = load - (trig - hyp) / (4.0 * ei * k**3)
+        if 2 in out:
+            out[2][:, moving] = (trig + hyp) / (4.0 * ei * k) - (w / passage.speed) ** 2 * load
     rest = np.flatnonzero(omega == 0)
     if rest.size:
         p0 = seat_force[:, rest[0]].real
         ei = passage.rail_bending_stiffness
-        u = (offsets + behind * cell) / cell
-        at_zero = (np.arange(n) * -span) % cell / cell
-        static = cell**3 / (24 * ei)
-        above = sleeper[0, rest[0]].real + p0[0] / pad[0]
-        displacement[:, rest[0]] = static * (_bernoulli4(u, 0) - _bernoulli4(at_zero, 0)) @ p0 \
-            + above
-        curvature[:, rest[0]] = (cell / (24 * ei)) * _bernoulli4(u, 2) @ p0
+        offsets = inside[:, None] - np.arange(n) * span                      # (X, N)
+        u = (offsets + (offsets < 0) * cell) / cell
+        if 0 in out:
+            at_zero = (np.arange(n) * -span) % cell / cell
+            above = sleeper[0, rest[0]].real + p0[0] / pad[0]
+            out[0][:, rest[0]] = cell**3 / (24 * ei) * (
+                _bernoulli4(u, 0) - _bernoulli4(at_zero, 0)) @ p0 + above
+        if 2 in out:
+            out[2][:, rest[0]] = (cell / (24 * ei)) * _bernoulli4(u, 2) @ p0
     bloch = np.exp(-1j * np.outer(wraps, theta))
-    return bloch * displacement, bloch * curvature
+    return tuple(bloch * out[d] for d in derivatives)

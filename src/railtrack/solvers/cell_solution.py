@@ -17,8 +17,10 @@ from numpy.typing import ArrayLike
 
 from ..equations.cell_rail_field import cell_rail_field_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
+from ..equations.positions import check_positions
 from ..model.passage import Passage
 from .cell_static import cell_at_rest
+from .field_chunks import CHUNK_ENTRIES, fourier_field
 
 __all__ = ["CellSolution"]
 
@@ -47,8 +49,9 @@ class CellSolution:
     residual_history : ndarray
     message : str
     truncation_error : float
-        Estimated max-norm error of the sleepers' displacements from keeping m
-        harmonics, relative to the largest peak in the cell [-]; NaN if not estimated.
+        Estimated max-norm error from keeping m harmonics, relative to the
+        largest peak in the cell, of the sleepers' displacements or of the
+        rail-seat loads, whichever is larger [-]; NaN if not estimated.
     rail_field_note : str
         Non-empty where `rail_displacement` and `rail_bending_moment` do not
         hold (the sleepers of a `railtrack.WheelSolution`): why, raised as the
@@ -136,28 +139,35 @@ class CellSolution:
         pad = cell.pad_stiffness[:, None] + 1j * self.frequencies * cell.pad_damping[:, None]
         return self._series(self.coefficients + self.seat_harmonics / pad, t)
 
-    def _field(self, t: ArrayLike, x: ArrayLike, which: int) -> np.ndarray:
-        t, x = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(x, dtype=float))
-        xs, index = np.unique(x, return_inverse=True)
+    def _field(self, t: ArrayLike, x: ArrayLike, which: int, *,
+               entries: int = CHUNK_ENTRIES) -> np.ndarray:
+        """Re sum_n r_n(x) e^{i omega_n t}: displacement (0), curvature less its kinks (1),
+        curvature (2); in blocks of about `entries` complex numbers (`fourier_field`)."""
         m = self.harmonics
         omega = self.frequencies[m:]
-        fields = cell_rail_field_coefficients(
-            self.passage, omega, self.coefficients[:, m:], self.seat_harmonics[:, m:],
-            self.cell.pad_stiffness, xs)
-        one_sided = fields[min(which, 1)]
-        if which == 1:
-            ei = self.passage.rail_bending_stiffness
-            one_sided = one_sided - kink_coefficients(self.passage, omega, xs) / ei
         weights = np.where(np.arange(m + 1) == 0, 1.0, 2.0)
-        chosen = one_sided[index.reshape(x.shape)] * weights
-        return np.einsum("...n,...n->...", chosen, np.exp(1j * np.multiply.outer(t, omega))).real
+        ei = self.passage.rail_bending_stiffness
+        check_positions(self.passage, omega, x)
+
+        def coefficients_at(xs: np.ndarray) -> np.ndarray:
+            (field,) = cell_rail_field_coefficients(
+                self.passage, omega, self.coefficients[:, m:], self.seat_harmonics[:, m:],
+                self.cell.pad_stiffness, xs, derivatives=(min(which, 1) * 2,))
+            if which == 1:
+                field = field - kink_coefficients(self.passage, omega, xs) / ei
+            return field * weights
+
+        return fourier_field(t, x, coefficients_at, omega, entries=entries)
 
     def rail_displacement(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
         """w_r(x, t) [m] anywhere along the rail (x from sleeper 0, towards +x); t, x broadcast.
 
         `railtrack.equations.cell_rail_field`; at a sleeper it is
         `rail_above_sleepers`, and for a cell of identical sleepers it is
-        `railtrack.Solution.rail_displacement`.
+        `railtrack.Solution.rail_displacement`.  Any number of points, in
+        blocks of bounded memory (`railtrack.solvers.field_chunks`).  Refuses
+        (ValueError) a non-finite x, or |x| so far that round-off leaves the
+        phases omega_m x / v no digits (`railtrack.equations.positions`).
         """
         self._check_rail_field()
         return self._field(t, x, 0)

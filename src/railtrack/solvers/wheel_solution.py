@@ -12,16 +12,19 @@ x = vt - d_k along the track.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from ..equations.moment import kink_sum
+from ..equations.positions import check_positions
 from ..equations.wheel_train_receptance import wheel_train_receptance
 from ..model.passage import Passage
 from .arguments import require_count
 from .cell_solution import CellSolution
+from .field_chunks import chunk_length
 
 __all__ = ["WheelSolution"]
 
@@ -93,8 +96,13 @@ class WheelSolution:
     def _series(self, harmonics: np.ndarray, t: ArrayLike) -> np.ndarray:
         t = np.asarray(t, dtype=float)
         omega = 2 * np.pi * self.grid / self.period
-        phases = np.exp(1j * np.multiply.outer(t, omega))                   # (..., lmax)
-        return 2 * np.einsum("kl,...l->k...", harmonics, phases).real
+        flat = t.ravel()
+        out = np.empty((harmonics.shape[0], flat.size))
+        step = chunk_length(omega.size)          # (times, lmax) blocks: bounded memory
+        for start in range(0, flat.size, step):
+            phases = np.exp(1j * np.multiply.outer(flat[start:start + step], omega))
+            out[:, start:start + step] = 2 * (harmonics @ phases.T).real
+        return out.reshape((harmonics.shape[0],) + t.shape)
 
     def wheel_position(self, t: ArrayLike) -> np.ndarray:
         """x_k(t) = v t - d_k [m], wheel k's distance from sleeper 0; shape (K,) + t.shape.
@@ -124,8 +132,9 @@ class WheelSolution:
         omega = 2 * np.pi * self.grid / self.period
         fluctuation = self._series(-self.contact_harmonics / (self.wheel.unsprung_mass
                                                               * omega**2), t)
-        return fluctuation + self._mean_height().reshape((-1,) + (1,) * np.ndim(t))
+        return fluctuation + self._mean_height.reshape((-1,) + (1,) * np.ndim(t))
 
+    @cached_property
     def _mean_height(self) -> np.ndarray:
         # The mean of the rail under a moving wheel takes only the wheels' static
         # loads and the sleepers' reactions (a varying force reaches the wheel at
@@ -137,8 +146,11 @@ class WheelSolution:
         t = np.arange(1024) * self.period / 1024
         path = self.wheel_position(t)
         under = self.sleepers._field(np.broadcast_to(t, path.shape), path, 0)
-        return under.mean(axis=-1) - self._anchor_sag() - self.lift
+        height = under.mean(axis=-1) - self._anchor_sag - self.lift
+        height.setflags(write=False)              # computed once and shared
+        return height
 
+    @cached_property
     def _anchor_sag(self) -> float:
         """The static sag at sleeper 0 of the wheels' uneven mean load [m].
 
@@ -148,6 +160,8 @@ class WheelSolution:
         rail of the cell's period sags under its varying part by
         ``sum_k mean_t[(P_k - mean P_k) Lambda^3 B4(x_k / Lambda)] / (24 EI)`` at
         sleeper 0 (Bernoulli's B4, `railtrack.equations.cell_rail_field`).
+        Computed once per solution: it takes the contact force over a finely
+        sampled period.
         """
         cell = self.sleepers.cell.sleepers * float(self.passage.sleeper_spacing)
         t = self.one_period(4 * self.sleepers.samples)     # the force's kinks want samples
@@ -159,27 +173,49 @@ class WheelSolution:
                      / (24 * float(self.passage.rail_bending_stiffness)))
 
     def _free_rail(self, t: ArrayLike, x: ArrayLike, derivative: int) -> np.ndarray:
-        """The free rail under the wheels' varying forces, eq. (13.2) at (t, x) [m or 1/m]."""
+        """The free rail under the wheels' varying forces, eq. (13.2) at (t, x) [m or 1/m].
+
+        The points are taken in blocks (`chunk_length`), every wheel's offset
+        at once, so that memory stays bounded and each harmonic's roots are
+        found once per block.
+        """
         t, x = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(x, dtype=float))
-        out = np.zeros(t.shape)
+        flat_t, flat_x = t.ravel(), x.ravel()
+        out = np.zeros(flat_t.size)
         omega = 2 * np.pi * self.grid / self.period
         speed = float(self.passage.speed)
-        for k, d in enumerate(np.asarray(self.passage.axle_positions, dtype=float)):
-            offset = x - speed * t + d
-            for force, w in zip(self.contact_harmonics[k], omega):
-                shape = wheel_train_receptance(self.passage, float(w), offset, derivative)
-                out -= 2 * (force * np.exp(1j * w * t) * shape).real     # P presses down
-        return out
+        axles = np.asarray(self.passage.axle_positions, dtype=float)[:, None]
+        step = chunk_length(axles.size)
+        for start in range(0, flat_t.size, step):
+            part = slice(start, start + step)
+            offset = flat_x[part] - speed * flat_t[part] + axles                 # (K, P)
+            # points that move with the train share their offsets: each once
+            offsets, where = np.unique(offset, return_inverse=True)
+            for force, w in zip(self.contact_harmonics.T, omega):
+                shape = wheel_train_receptance(self.passage, float(w), offsets,
+                                               derivative)[where.reshape(offset.shape)]
+                # P presses down
+                out[part] -= 2 * (np.exp(1j * w * flat_t[part]) * (force @ shape)).real
+        return out.reshape(t.shape)
+
+    def _check_positions(self, x: ArrayLike) -> None:
+        """Refuse x whose phases round-off swamps, for the sleepers' and the wheels' harmonics."""
+        top = max(float(self.sleepers.frequencies.max()),
+                  2 * np.pi * float(np.max(self.grid)) / self.period)
+        check_positions(self.passage, [top], x)
 
     def rail_displacement(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
         """w_r(x, t) [m] anywhere along the rail (x from sleeper 0); t, x broadcast.
 
         The rail field of `sleepers` (their reactions and the wheels' static
         loads) plus the free rail under the wheels' varying forces, eq.
-        (13.2), with the anchor at sleeper 0 corrected (`_anchor_sag`).
+        (13.2), with the anchor at sleeper 0 corrected (`_anchor_sag`).  Any
+        number of points, in blocks of bounded memory; x as
+        `railtrack.CellSolution.rail_displacement` (too far or not finite: ValueError).
         """
+        self._check_positions(x)
         return (self.sleepers._field(t, x, 0) + self._free_rail(t, x, 0)
-                - self._anchor_sag())
+                - self._anchor_sag)
 
     def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
         """EI d^2 w_r/dx^2 at time t [s] and position x [m] [N m], sagging positive.
@@ -188,6 +224,7 @@ class WheelSolution:
         closed form) plus EI times the curvature of eq. (13.2), which is
         continuous across the wheel.
         """
+        self._check_positions(x)
         ei = float(self.passage.rail_bending_stiffness)
         return (ei * self.sleepers._field(t, x, 1) + kink_sum(self.passage, t, x)
                 + ei * self._free_rail(t, x, 2))
