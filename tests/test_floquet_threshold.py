@@ -33,3 +33,15 @@ def test_the_verdict_near_the_unit_circle_is_the_rings(speed, stable):
     assert (ring < 1) == stable
     assert hill.stable == stable and hill.kind == "complex"
     assert np.isfinite(hill.dominant)
+
+
+def test_the_kind_of_the_dominant_multiplier_is_the_rings():
+    # At 400 m/s the dominant pair sits at 2.44 rad, 0.7 rad off the negative
+    # real axis: the ring's multiplier has the same argument, so "complex" it is
+    solution = rt.solve(FOLD_TRACK, rt.Train.paper(speed=400.0), FOLD_LAW, harmonics=25,
+                        stability="off")
+    hill = rt.floquet(solution)
+    ring = rt.ring_multipliers(solution, elements_per_span=2, steps_per_period=600).dominant
+    assert abs(abs(np.angle(ring)) - abs(np.angle(hill.dominant))) < 0.02
+    assert 0.5 < abs(np.angle(ring)) < np.pi - 0.5
+    assert hill.kind == "complex" and hill.stable
