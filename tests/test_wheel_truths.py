@@ -106,7 +106,7 @@ def test_the_compression_is_the_rail_under_the_wheel_plus_the_profile_less_the_w
     result = rt.solve(TRACK, rt.Train.paper(speed=100.0), LAW, 150, wheel=rt.Wheel(600.0),
                       profile=bump)
     assert result.converged
-    t = result.one_period(16)
+    t = np.linspace(8.3, 10.3, 8) / 100.0                 # wheel 1 crossing the dip
     x = result.wheel_position(t)
     rail = result.rail_displacement(np.broadcast_to(t, x.shape), x)
     kinematic = rail + bump(x) - result.wheel_displacement(t)
