@@ -74,19 +74,47 @@ def test_hill_matrix_at_zero_is_the_jacobian(fold_solution):
     assert np.max(np.abs(product - solution.passage.sleeper_mass * change)) < 1e-8 * scale
 
 
-def _scalar_root(function, z, steps=50):
+def lattice_stiffness(passage, s, q):
+    """M s^2 + A / (1 + A eta), A = k1 + eta1 s, eta by the lattice sum: the sleeper, its pad
+    and the rail of eqs. (4)-(8) at complex frequency, written out here."""
+    pad = passage.pad_stiffness + passage.pad_damping * s
+    return passage.sleeper_mass * s**2 + pad / (1 + pad * lattice_receptance(passage, s, q))
+
+
+def test_condensed_stiffness_at_complex_frequency_is_the_lattice_sleeper():
+    passage = rt.Passage(rt.Track.paper(pad_damping=30e3), rt.Train.paper(speed=300.0))
+    s = np.array([3 + 200j, -50 + 10j, 0.01j, 2000j, -300 + 4000j, -80.0, 40 - 900j])
+    q = np.array([0.3, 1.0, 0.2, 2.5, 0.0, 3.0, -1.2])
+    np.testing.assert_allclose(condensed_stiffness(passage, s, q), lattice_stiffness(passage, s, q),
+                               rtol=1e-8)
+
+
+def test_condensed_stiffness_is_analytic_in_s():
+    # Cauchy-Riemann: dD/dRe(s) = -i dD/dIm(s), by central differences, away from
+    # the real axis and across the series/closed-form switch of the bending functions
+    passage = rt.Passage(rt.Track.paper(pad_damping=30e3), rt.Train.paper(speed=300.0))
+    for s, q in ((3 + 200j, 0.3), (-40 + 1500j, 1.1), (25 - 3000j, 2.0), (-5 + 60j, 0.0)):
+        h = 1e-4 * abs(s)
+        along = (condensed_stiffness(passage, s + h, q) - condensed_stiffness(passage, s - h, q))
+        across = (condensed_stiffness(passage, s + 1j * h, q)
+                  - condensed_stiffness(passage, s - 1j * h, q))
+        assert abs(along + 1j * across) < 1e-6 * abs(along)
+
+
+def _secant_root(function, z0, z1, steps=60):
+    f0, f1 = function(z0), function(z1)
     for _ in range(steps):
-        h = 1e-7 * max(1.0, abs(z))
-        step = function(z) * 2 * h / (function(z + h) - function(z - h))
-        z -= step
-        if abs(step) < 1e-13 * max(1.0, abs(z)):
-            return z
+        z0, z1 = z1, z1 - f1 * (z1 - z0) / (f1 - f0)
+        f0, f1 = f1, function(z1)
+        if abs(z1 - z0) < 1e-12 * max(1.0, abs(z1)):
+            return z1
     raise AssertionError("no convergence")
 
 
 def test_linear_foundation_exponents_are_the_free_waves():
-    # K and C are constants, so H is diagonal: each exponent solves
-    # D(lambda + i k Omega, q_k) + k2 + eta2 (lambda + i k Omega) = 0 for one k
+    # K and C are constants, so H is diagonal: each exponent solves, for one k,
+    # M s^2 + A / (1 + A eta(s, q)) + k2 + eta2 s = 0, s = lambda + i k Omega,
+    # written here with the lattice sum of eq. (3) (not with hill.py)
     law = rt.LinearFoundation(20e6, 20e3)
     track = rt.Track.paper(pad_damping=30e3)
     solution = rt.solve(track, rt.Train.paper(speed=300.0), law, harmonics=20)
@@ -94,17 +122,18 @@ def test_linear_foundation_exponents_are_the_free_waves():
     passage = solution.passage
     omega = passage.fundamental_frequency
     assert result.stable and result.resolved.sum() >= 4
+    k = np.arange(-20, 21)
     for exponent, phase in zip(result.exponents[:6], result.phases[:6]):
-        k = np.arange(-20, 21)
-        s = exponent + 1j * k * omega
-        q = k * omega * passage.sleeper_spacing / passage.speed - phase
-        row = int(np.argmin(np.abs(condensed_stiffness(passage, s, q) + law.stiffness
-                                   + law.damping * s)))
-
-        def diagonal(lam, row=row):
+        def diagonal(lam, row):
             s = lam + 1j * k[row] * omega
-            return condensed_stiffness(passage, s, q[row]) + law.stiffness + law.damping * s
-        assert abs(_scalar_root(diagonal, exponent + 0.3) - exponent) < 1e-8 * abs(exponent)
+            q = k[row] * omega * passage.sleeper_spacing / passage.speed - phase
+            return complex(lattice_stiffness(passage, s, q) + law.stiffness + law.damping * s)
+        sizes = [abs(diagonal(exponent, row)) for row in range(k.size)]
+        row = int(np.argmin(sizes))
+        scale = passage.sleeper_mass * abs(exponent + 1j * k[row] * omega) ** 2 + law.stiffness
+        assert sizes[row] < 1e-6 * scale
+        root = _secant_root(lambda z: diagonal(z, row), exponent + 0.3, exponent + 0.3 + 1e-3j)
+        assert abs(root - exponent) < 1e-7 * abs(exponent)
 
 
 @pytest.fixture(scope="module")
@@ -121,7 +150,10 @@ def five_solutions(fold_branch):
 
 def test_verdicts_at_525_match_the_ring(five_solutions):
     # chapter 10: the ring keeps the -2.54 and -1.51 mm solutions and leaves the
-    # other three; it leaves the -1.607 mm one growing 1.92-fold per period
+    # other three; it leaves the -1.607 mm one growing 1.92-fold per period.
+    # The ring here is the linearised one (rt.ring_multipliers): its Newmark map
+    # over a period, coarse (2 elements a span, 300 and 600 steps a period, the
+    # step error extrapolated), an independent method for each verdict.
     dips = np.array([s.one_period()[1].min() * 1e3 for s in five_solutions])
     assert len(dips) == 5
     verdicts = {round(d, 2): floquet(s) for d, s in zip(dips, five_solutions)}
@@ -130,6 +162,13 @@ def test_verdicts_at_525_match_the_ring(five_solutions):
     assert leaving.kind == "complex" and abs(abs(leaving.dominant) - 1.92) < 0.1
     # the two between the folds leave by a real multiplier above +1
     assert {verdicts[-2.41].kind, verdicts[-1.87].kind} == {"real +"}
+    for dip, solution in zip(dips, five_solutions):
+        ring = [rt.ring_multipliers(solution, elements_per_span=2, steps_per_period=steps)
+                for steps in (300, 600)]
+        extrapolated = _richardson(*(r.dominant for r in ring))
+        hill = verdicts[round(dip, 2)]
+        assert (extrapolated < 1) == hill.stable
+        assert abs(extrapolated - abs(hill.dominant)) < 0.02 * max(1.0, abs(hill.dominant))
 
 
 def test_bloch_phases_refuse_a_fractional_number_of_sleepers():

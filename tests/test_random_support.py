@@ -3,6 +3,8 @@
 Independent truths: with no scatter every draw is today's sound track
 (`railtrack.Solution`'s seat load and moment under the wheel); the factors'
 mean and coefficient of variation; the same seed gives the same draws.
+Each draw against a cell built by hand from its factors, and the moment
+under every wheel: tests/test_random_support_cells.py.
 """
 
 import numpy as np
