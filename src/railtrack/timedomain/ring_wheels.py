@@ -151,9 +151,9 @@ class WheelStepper:
         self.r, (self.dofs, self.shapes) = profile_values, shapes
         self.q = np.asarray(loads, dtype=float)
         self.z, self.zv, self.za, self.p = (np.array(part, dtype=float) for part in state)
-        dt, m = stepper.dt, float(wheel.unsprung_mass)
-        self.gain = float(wheel.primary_stiffness) + (2.0 / dt) * float(wheel.primary_damping) \
-            + (4.0 / dt**2) * m
+        dt, m, alpha = stepper.dt, float(wheel.unsprung_mass), stepper.alpha
+        self.gain = float(wheel.primary_stiffness) + stepper.gain * float(wheel.primary_damping) \
+            + m / ((1.0 - alpha) * stepper.newmark[1] * dt**2)
         steps, count = self.r.shape
         self.contact_forces = np.empty((steps, count))
         self.wheel_displacements = np.empty((steps, count))
@@ -182,10 +182,19 @@ class WheelStepper:
 
     def _wheel_history(self) -> np.ndarray:
         """h_w: the wheels' Newmark right-hand side from the state at the start of the step [N]."""
-        dt, wheel = self.stepper.dt, self.wheel
+        base, wheel = self.stepper, self.wheel
+        dt, alpha = base.dt, base.alpha
         m, c = float(wheel.unsprung_mass), float(wheel.primary_damping)
-        return (m * ((4.0 / dt**2) * self.z + (4.0 / dt) * self.zv + self.za)
-                + c * ((2.0 / dt) * self.z + self.zv))
+        if alpha == 0.0:
+            return (m * ((4.0 / dt**2) * self.z + (4.0 / dt) * self.zv + self.za)
+                    + c * ((2.0 / dt) * self.z + self.zv))
+        # HHT: the spring, dashpot and contact at t_{n+1} - alpha dt (`NewmarkStepper`).
+        beta, k = base.newmark[1], float(wheel.primary_stiffness)
+        inertia = m / ((1.0 - alpha) * beta * dt**2)
+        start = self.p - self.q - c * self.zv - k * self.z
+        return (inertia * (self.z + dt * self.zv + dt**2 * (0.5 - beta) * self.za)
+                + c * (base.gain * self.z + base.rates[0] * self.zv + base.rates[1] * self.za)
+                + alpha / (1.0 - alpha) * start)
 
     def step(self, u, v, a, index: int):
         """State (u, u', u'') of the ring at the end of the step ending at step `index`."""
@@ -195,24 +204,20 @@ class WheelStepper:
         self.wheel_displacements[previous] = self.z
         self.rail_under_wheels[previous] = self.uc
         sleepers = base.mesh.sleeper_dofs
-        rhs = base.history @ np.concatenate([u, v, a])
-        if base.constant is not None:
-            rhs += base.constant
+        rhs = base.right_hand_side(u, v, a)
+        if base.alpha != 0.0:   # HHT: the contact forces at the start of the step, where they were
+            ratio = base.alpha / (1.0 - base.alpha)
+            for j in range(self.q.size):
+                np.add.at(rhs, self.dofs[previous][j], -ratio * self.p[j] * self.shapes[previous][j])
         history = self._wheel_history()
         u_next, base.force, self.p, self.uc = solve_contacts(
             base.system, rhs, (self.dofs[index], self.shapes[index]), self.wheel,
             self.r[index] - (history - self.q) / self.gain, self.gain,
-            base._remainder((2.0 / dt) * u[sleepers] + v[sleepers]), (base.force, self.p),
+            base._remainder(base.offset(u, v, a, sleepers)), (base.force, self.p),
             base.tol, base.iterations, None if self.compliance is None else self.compliance[index])
         z_next = (history + self.p - self.q) / self.gain
-        increment = z_next - self.z
-        self.za = (4.0 / dt**2) * increment - (4.0 / dt) * self.zv - self.za
-        self.zv = (2.0 / dt) * increment - self.zv
-        self.z = z_next
-        increment = u_next - u
-        a_next = (4.0 / dt**2) * increment - (4.0 / dt) * v - a
-        v_next = (2.0 / dt) * increment - v
-        return u_next, v_next, a_next
+        self.z, self.zv, self.za = base.finish(self.z, self.zv, self.za, z_next)
+        return base.finish(u, v, a, u_next)
 
     def outputs(self) -> dict[str, np.ndarray]:
         """The wheels' records of the last period for `TimeDomainSolution` (copies)."""
