@@ -12,10 +12,13 @@ load).  With the rail-top profile r(x) fixed on the ring
     delta_j = u_c,j + r(x_c,j) - z_j,      P_j = C_H max(delta_j, 0)^{3/2},
     m_w z_j'' + c_p z_j' + k_p z_j = P_j - Q_j.
 
-A Newmark step (average acceleration, as `railtrack.timedomain.newmark`) is
-``A u + U g + B P = b`` for the ring, B the shape functions of the contact
-points at the end of the step, and ``a_w z = h_w + P - Q`` for the wheels
-(a_w = k_p + (2/dt) c_p + (4/dt^2) m_w).  The unknowns that carry the
+A Newmark step (average acceleration, or HHT-alpha, as
+`railtrack.timedomain.newmark`) is ``A u + U g + B P = b`` for the ring, B the
+shape functions of the contact points at the end of the step, and
+``a_w z = h_w + P - Q`` for the wheels (a_w = k_p + (2/dt) c_p + (4/dt^2) m_w
+for average acceleration; HHT puts the spring, dashpot and contact forces at
+t_{n+1} - alpha dt, the start of the step's share alpha / (1 - alpha) in h_w
+and in b, where B is the contact points' shapes at the start of the step).  The unknowns that carry the
 nonlinearity, y = (sleeper displacements w, compressions delta), satisfy
 
     y - y_hat + S' F(y) = 0,      S' = V^T A^-1 V + diag(0, 1/a_w),   V = [U, B],
@@ -42,6 +45,7 @@ from ..model.wheel import Wheel
 from .fem import contact_compliance, contact_shapes
 from .newmark import CondensedSystem, NewmarkStepper, _sleeper_projector, evaluate_law
 from .ring_contact import profile_on_ring
+from .wheel_contacts import solve_contacts
 
 __all__ = ["check_wheel_arguments", "attach_wheels", "WheelStepper", "solve_contacts"]
 
@@ -152,8 +156,9 @@ class WheelStepper:
         self.q = np.asarray(loads, dtype=float)
         self.z, self.zv, self.za, self.p = (np.array(part, dtype=float) for part in state)
         dt, m, alpha = stepper.dt, float(wheel.unsprung_mass), stepper.alpha
+        inertia = 4.0 / dt**2 if alpha == 0.0 else 1.0 / ((1.0 - alpha) * stepper.newmark[1] * dt**2)
         self.gain = float(wheel.primary_stiffness) + stepper.gain * float(wheel.primary_damping) \
-            + m / ((1.0 - alpha) * stepper.newmark[1] * dt**2)
+            + inertia * m
         steps, count = self.r.shape
         self.contact_forces = np.empty((steps, count))
         self.wheel_displacements = np.empty((steps, count))
@@ -198,7 +203,7 @@ class WheelStepper:
 
     def step(self, u, v, a, index: int):
         """State (u, u', u'') of the ring at the end of the step ending at step `index`."""
-        base, dt = self.stepper, self.stepper.dt
+        base = self.stepper
         previous = (index - 1) % self.r.shape[0]
         self.contact_forces[previous] = self.p
         self.wheel_displacements[previous] = self.z
@@ -224,89 +229,3 @@ class WheelStepper:
         return dict(contact_forces=self.contact_forces.copy(),
                     wheel_displacements=self.wheel_displacements.copy(),
                     rail_under_wheels=self.rail_under_wheels.copy(), wheel=self.wheel)
-
-
-def solve_contacts(system, rhs, contacts, wheel, offset, gain, remainder, guess, tol, iterations,
-                   compliance=None):
-    """One solve of ``A u + U g(w) + B P(delta) = rhs`` with the wheels condensed in.
-
-    Parameters
-    ----------
-    system : CondensedSystem
-        A factored, with A^-1 U and S = U^T A^-1 U.
-    rhs : ndarray, shape (n_dofs,)
-        b [N, N m].
-    contacts : (dofs, shapes), shapes (J, 4)
-        The contact points' element DOFs and Hermite weights.
-    wheel : Wheel
-    offset : ndarray, shape (J,)
-        r(x_c) - (h_w - Q) / a_w [m]: with it delta = u_c - P / a_w + offset.
-    gain : float
-        a_w [N/m] (k_p in a static solve).
-    remainder : callable
-        w -> (g, dg/dw) of the sleepers' laws beyond the factored reference [N, N/m].
-    guess : (g, P)
-        Starting forces [N].
-    tol : float
-        Newton's tolerance on w and delta [m] (plus a round-off floor).
-    iterations : int
-    compliance : ndarray, shape (J,), optional
-        g [m/N]: the rail's local sag under each wheel per unit force.
-
-    Returns
-    -------
-    u : ndarray, shape (n_dofs,)
-    g, P : ndarray
-        The converged sleeper remainders and contact forces [N].
-    u_c : ndarray, shape (J,)
-        The rail's displacement under each wheel [m].
-    """
-    dofs, shapes = contacts
-    sleepers = system.sleeper_dofs
-    count, n_s = shapes.shape[0], sleepers.size
-    columns = np.zeros((rhs.size, 1 + count))
-    columns[:, 0] = rhs
-    for j in range(count):
-        np.add.at(columns[:, 1 + j], dofs[j], shapes[j])
-    solved = system.lu.solve(columns)
-    free, contact = solved[:, 0], solved[:, 1:]   # A^-1 b [m], A^-1 B [m/N]
-
-    def at_contacts(field):
-        return np.einsum("jk,jk...->j...", shapes, field[dofs])
-
-    influence = np.empty((n_s + count, n_s + count))
-    influence[:n_s, :n_s] = system.influence
-    influence[:n_s, n_s:] = contact[sleepers]
-    influence[n_s:, :n_s] = at_contacts(system.response)
-    influence[n_s:, n_s:] = at_contacts(contact) + np.eye(count) / gain
-    if compliance is not None:
-        influence[n_s:, n_s:] += np.diag(compliance)
-    target = np.concatenate([free[sleepers], at_contacts(free) + offset])
-
-    def forces(y):
-        g, dg = remainder(y[:n_s])
-        delta = y[n_s:]
-        return (np.concatenate([g, wheel.contact_force(delta)]),
-                np.concatenate([dg, wheel.contact_stiffness(delta)]))
-
-    y = target - influence @ np.concatenate(guess)
-    for _ in range(iterations + 1):
-        force, slope = forces(y)
-        coupled = influence @ force
-        mismatch = y - target + coupled
-        # Round-off floor: the contact rows hold P / a_w, metres for a light wheel.
-        floor = tol + 16 * np.finfo(float).eps * (np.abs(target) + np.abs(coupled))
-        if np.all(np.abs(mismatch) <= floor):
-            break
-        if not np.all(np.isfinite(mismatch)):
-            raise RuntimeError("Newton on the sleepers and wheel contacts diverged: its "
-                               "mismatch is not finite")
-        y = y - np.linalg.solve(np.eye(y.size) + influence * slope[None, :], mismatch)
-    else:
-        raise RuntimeError(
-            f"Newton on the sleepers and wheel contacts did not converge in {iterations} "
-            f"iterations (mismatch {float(np.max(np.abs(mismatch))):.2e} m): raise "
-            "max_newton_iterations, or check the foundation law and the profile's smoothness")
-    g, p = force[:n_s], force[n_s:]
-    u = free - system.response @ g - contact @ p
-    return u, g, p, at_contacts(u) if compliance is None else at_contacts(u) - compliance * p
