@@ -217,9 +217,11 @@ def simulate_time_domain(
         rail-seat load (through the pad's dashpot) above all, ring with the
         mesh unless `hht_alpha` damps it.  Even then they converge only once
         the elements are short against the shear length sqrt(EI / kGA)
-        (0.16 m on UIC60): on the paper's track at 45 m/s the peak rail-seat
-        load is 1 to 4 % high at 4 to 8 elements per span and settles within
-        0.6 % from 24 elements per span (the table of issue 27,
+        (0.16 m on UIC60): on the paper's track at 45 m/s (constant loads)
+        the peak rail-seat load is 26.6 to 26.9 kN from 32 elements per span
+        on (h = 19 mm, 3600 to 14400 steps per period), but 27.1 to 27.6 kN
+        at 4 to 16, against 27.1 to 28.7 kN at any mesh with average
+        acceleration (Euler–Bernoulli: 25.43 kN at every mesh; issue 27,
         `tests/test_ring_timoshenko.py`).  The point support itself is a
         limit: on it the rail-seat load jumps when a wheel passes the
         sleeper (the rail's velocity there jumps, the dashpot follows); a
