@@ -208,8 +208,8 @@ def simulate_time_domain(
         whose own interpolation plus the local sag g(xi) P carries the wheels
         (`railtrack.timedomain.ring_wheels`); default the Euler–Bernoulli rail.
         Its slope jumps by R / kGA above each point-supported sleeper, which
-        the wheels feel, and its undamped higher pinned-pinned modes may keep
-        the wheels' period change near 1e-4.  The time-step error estimate and
+        the wheels feel; with ``hht_alpha=0`` its undamped higher modes may
+        keep the wheels' period change above 1e-4.  The time-step error estimate and
         a harmonic-balance start stay those of the Euler–Bernoulli rail.
 
         The rail's velocity jumps wherever a load passes, and the FE ring
@@ -219,10 +219,11 @@ def simulate_time_domain(
         the elements are short against the shear length sqrt(EI / kGA)
         (0.16 m on UIC60): on the paper's track at 45 m/s (constant loads)
         the peak rail-seat load is 26.6 to 26.9 kN from 32 elements per span
-        on (h = 19 mm, 3600 to 14400 steps per period), but 27.1 to 27.6 kN
+        on (h = 19 mm, 3600 to 14400 steps per period), but 26.8 to 27.6 kN
         at 4 to 16, against 27.1 to 28.7 kN at any mesh with average
-        acceleration (Euler–Bernoulli: 25.43 kN at every mesh; issue 27,
-        `tests/test_ring_timoshenko.py`).  The point support itself is a
+        acceleration (Euler–Bernoulli: 25.43 kN at every mesh; with wheels on
+        the 0.5 mm dip 27.42, 27.27, 27.21 kN at 8, 16, 32 elements per span;
+        issue 27, `tests/test_ring_timoshenko.py`).  The point support itself is a
         limit: on it the rail-seat load jumps when a wheel passes the
         sleeper (the rail's velocity there jumps, the dashpot follows); a
         real pad spreads the load over its width.
