@@ -12,10 +12,13 @@ load).  With the rail-top profile r(x) fixed on the ring
     delta_j = u_c,j + r(x_c,j) - z_j,      P_j = C_H max(delta_j, 0)^{3/2},
     m_w z_j'' + c_p z_j' + k_p z_j = P_j - Q_j.
 
-A Newmark step (average acceleration, as `railtrack.timedomain.newmark`) is
-``A u + U g + B P = b`` for the ring, B the shape functions of the contact
-points at the end of the step, and ``a_w z = h_w + P - Q`` for the wheels
-(a_w = k_p + (2/dt) c_p + (4/dt^2) m_w).  The unknowns that carry the
+A Newmark step (average acceleration, or HHT-alpha, as
+`railtrack.timedomain.newmark`) is ``A u + U g + B P = b`` for the ring, B the
+shape functions of the contact points at the end of the step, and
+``a_w z = h_w + P - Q`` for the wheels (a_w = k_p + (2/dt) c_p + (4/dt^2) m_w
+for average acceleration; HHT puts the spring, dashpot and contact forces at
+t_{n+1} - alpha dt, the start of the step's share alpha / (1 - alpha) in h_w
+and in b, where B is the contact points' shapes at the start of the step).  The unknowns that carry the
 nonlinearity, y = (sleeper displacements w, compressions delta), satisfy
 
     y - y_hat + S' F(y) = 0,      S' = V^T A^-1 V + diag(0, 1/a_w),   V = [U, B],
@@ -42,6 +45,7 @@ from ..model.wheel import Wheel
 from .fem import contact_compliance, contact_shapes
 from .newmark import CondensedSystem, NewmarkStepper, _sleeper_projector, evaluate_law
 from .ring_contact import profile_on_ring
+from .wheel_contacts import solve_contacts
 
 __all__ = ["check_wheel_arguments", "attach_wheels", "WheelStepper", "solve_contacts"]
 
@@ -151,9 +155,10 @@ class WheelStepper:
         self.r, (self.dofs, self.shapes) = profile_values, shapes
         self.q = np.asarray(loads, dtype=float)
         self.z, self.zv, self.za, self.p = (np.array(part, dtype=float) for part in state)
-        dt, m = stepper.dt, float(wheel.unsprung_mass)
-        self.gain = float(wheel.primary_stiffness) + (2.0 / dt) * float(wheel.primary_damping) \
-            + (4.0 / dt**2) * m
+        dt, m, alpha = stepper.dt, float(wheel.unsprung_mass), stepper.alpha
+        inertia = 4.0 / dt**2 if alpha == 0.0 else 1.0 / ((1.0 - alpha) * stepper.newmark[1] * dt**2)
+        self.gain = float(wheel.primary_stiffness) + stepper.gain * float(wheel.primary_damping) \
+            + inertia * m
         steps, count = self.r.shape
         self.contact_forces = np.empty((steps, count))
         self.wheel_displacements = np.empty((steps, count))
@@ -182,126 +187,45 @@ class WheelStepper:
 
     def _wheel_history(self) -> np.ndarray:
         """h_w: the wheels' Newmark right-hand side from the state at the start of the step [N]."""
-        dt, wheel = self.stepper.dt, self.wheel
+        base, wheel = self.stepper, self.wheel
+        dt, alpha = base.dt, base.alpha
         m, c = float(wheel.unsprung_mass), float(wheel.primary_damping)
-        return (m * ((4.0 / dt**2) * self.z + (4.0 / dt) * self.zv + self.za)
-                + c * ((2.0 / dt) * self.z + self.zv))
+        if alpha == 0.0:
+            return (m * ((4.0 / dt**2) * self.z + (4.0 / dt) * self.zv + self.za)
+                    + c * ((2.0 / dt) * self.z + self.zv))
+        # HHT: the spring, dashpot and contact at t_{n+1} - alpha dt (`NewmarkStepper`).
+        beta, k = base.newmark[1], float(wheel.primary_stiffness)
+        inertia = m / ((1.0 - alpha) * beta * dt**2)
+        start = self.p - self.q - c * self.zv - k * self.z
+        return (inertia * (self.z + dt * self.zv + dt**2 * (0.5 - beta) * self.za)
+                + c * (base.gain * self.z + base.rates[0] * self.zv + base.rates[1] * self.za)
+                + alpha / (1.0 - alpha) * start)
 
     def step(self, u, v, a, index: int):
         """State (u, u', u'') of the ring at the end of the step ending at step `index`."""
-        base, dt = self.stepper, self.stepper.dt
+        base = self.stepper
         previous = (index - 1) % self.r.shape[0]
         self.contact_forces[previous] = self.p
         self.wheel_displacements[previous] = self.z
         self.rail_under_wheels[previous] = self.uc
         sleepers = base.mesh.sleeper_dofs
-        rhs = base.history @ np.concatenate([u, v, a])
-        if base.constant is not None:
-            rhs += base.constant
+        rhs = base.right_hand_side(u, v, a)
+        if base.alpha != 0.0:   # HHT: the contact forces at the start of the step, where they were
+            ratio = base.alpha / (1.0 - base.alpha)
+            for j in range(self.q.size):
+                np.add.at(rhs, self.dofs[previous][j], -ratio * self.p[j] * self.shapes[previous][j])
         history = self._wheel_history()
         u_next, base.force, self.p, self.uc = solve_contacts(
             base.system, rhs, (self.dofs[index], self.shapes[index]), self.wheel,
             self.r[index] - (history - self.q) / self.gain, self.gain,
-            base._remainder((2.0 / dt) * u[sleepers] + v[sleepers]), (base.force, self.p),
+            base._remainder(base.offset(u, v, a, sleepers)), (base.force, self.p),
             base.tol, base.iterations, None if self.compliance is None else self.compliance[index])
         z_next = (history + self.p - self.q) / self.gain
-        increment = z_next - self.z
-        self.za = (4.0 / dt**2) * increment - (4.0 / dt) * self.zv - self.za
-        self.zv = (2.0 / dt) * increment - self.zv
-        self.z = z_next
-        increment = u_next - u
-        a_next = (4.0 / dt**2) * increment - (4.0 / dt) * v - a
-        v_next = (2.0 / dt) * increment - v
-        return u_next, v_next, a_next
+        self.z, self.zv, self.za = base.finish(self.z, self.zv, self.za, z_next)
+        return base.finish(u, v, a, u_next)
 
     def outputs(self) -> dict[str, np.ndarray]:
         """The wheels' records of the last period for `TimeDomainSolution` (copies)."""
         return dict(contact_forces=self.contact_forces.copy(),
                     wheel_displacements=self.wheel_displacements.copy(),
                     rail_under_wheels=self.rail_under_wheels.copy(), wheel=self.wheel)
-
-
-def solve_contacts(system, rhs, contacts, wheel, offset, gain, remainder, guess, tol, iterations,
-                   compliance=None):
-    """One solve of ``A u + U g(w) + B P(delta) = rhs`` with the wheels condensed in.
-
-    Parameters
-    ----------
-    system : CondensedSystem
-        A factored, with A^-1 U and S = U^T A^-1 U.
-    rhs : ndarray, shape (n_dofs,)
-        b [N, N m].
-    contacts : (dofs, shapes), shapes (J, 4)
-        The contact points' element DOFs and Hermite weights.
-    wheel : Wheel
-    offset : ndarray, shape (J,)
-        r(x_c) - (h_w - Q) / a_w [m]: with it delta = u_c - P / a_w + offset.
-    gain : float
-        a_w [N/m] (k_p in a static solve).
-    remainder : callable
-        w -> (g, dg/dw) of the sleepers' laws beyond the factored reference [N, N/m].
-    guess : (g, P)
-        Starting forces [N].
-    tol : float
-        Newton's tolerance on w and delta [m] (plus a round-off floor).
-    iterations : int
-    compliance : ndarray, shape (J,), optional
-        g [m/N]: the rail's local sag under each wheel per unit force.
-
-    Returns
-    -------
-    u : ndarray, shape (n_dofs,)
-    g, P : ndarray
-        The converged sleeper remainders and contact forces [N].
-    u_c : ndarray, shape (J,)
-        The rail's displacement under each wheel [m].
-    """
-    dofs, shapes = contacts
-    sleepers = system.sleeper_dofs
-    count, n_s = shapes.shape[0], sleepers.size
-    columns = np.zeros((rhs.size, 1 + count))
-    columns[:, 0] = rhs
-    for j in range(count):
-        np.add.at(columns[:, 1 + j], dofs[j], shapes[j])
-    solved = system.lu.solve(columns)
-    free, contact = solved[:, 0], solved[:, 1:]   # A^-1 b [m], A^-1 B [m/N]
-
-    def at_contacts(field):
-        return np.einsum("jk,jk...->j...", shapes, field[dofs])
-
-    influence = np.empty((n_s + count, n_s + count))
-    influence[:n_s, :n_s] = system.influence
-    influence[:n_s, n_s:] = contact[sleepers]
-    influence[n_s:, :n_s] = at_contacts(system.response)
-    influence[n_s:, n_s:] = at_contacts(contact) + np.eye(count) / gain
-    if compliance is not None:
-        influence[n_s:, n_s:] += np.diag(compliance)
-    target = np.concatenate([free[sleepers], at_contacts(free) + offset])
-
-    def forces(y):
-        g, dg = remainder(y[:n_s])
-        delta = y[n_s:]
-        return (np.concatenate([g, wheel.contact_force(delta)]),
-                np.concatenate([dg, wheel.contact_stiffness(delta)]))
-
-    y = target - influence @ np.concatenate(guess)
-    for _ in range(iterations + 1):
-        force, slope = forces(y)
-        coupled = influence @ force
-        mismatch = y - target + coupled
-        # Round-off floor: the contact rows hold P / a_w, metres for a light wheel.
-        floor = tol + 16 * np.finfo(float).eps * (np.abs(target) + np.abs(coupled))
-        if np.all(np.abs(mismatch) <= floor):
-            break
-        if not np.all(np.isfinite(mismatch)):
-            raise RuntimeError("Newton on the sleepers and wheel contacts diverged: its "
-                               "mismatch is not finite")
-        y = y - np.linalg.solve(np.eye(y.size) + influence * slope[None, :], mismatch)
-    else:
-        raise RuntimeError(
-            f"Newton on the sleepers and wheel contacts did not converge in {iterations} "
-            f"iterations (mismatch {float(np.max(np.abs(mismatch))):.2e} m): raise "
-            "max_newton_iterations, or check the foundation law and the profile's smoothness")
-    g, p = force[:n_s], force[n_s:]
-    u = free - system.response @ g - contact @ p
-    return u, g, p, at_contacts(u) if compliance is None else at_contacts(u) - compliance * p

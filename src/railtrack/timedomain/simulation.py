@@ -8,11 +8,19 @@ beta = 1/4), from the static state, until the sleeper's response over one
 period T = H / v repeats the previous period's.  Nothing is shared with the
 harmonic-balance solver but the `Track` and the foundation object.
 
-Why average acceleration and not HHT-alpha: it is unconditionally stable,
-second-order accurate and adds no numerical damping.  The unresolved
-high-frequency rail modes it leaves undamped carry almost no motion at the
-sleepers, and the pad dashpots damp those that do, so the sleeper response
-settles to its period without numerical dissipation (see the tests).
+Why average acceleration and not HHT-alpha on the Euler–Bernoulli rail: it
+is unconditionally stable, second-order accurate and adds no numerical
+damping.  The unresolved high-frequency rail modes it leaves undamped carry
+almost no motion at the sleepers, and the pad dashpots damp those that do, so
+the sleeper response settles to its period without numerical dissipation
+(see the tests).  A Timoshenko rail is different (issue 27): under a moving
+load its velocity jumps wherever the load passes (the shear kink Q / kGA
+moving at v), at every rail node of the mesh, and the nodes' mass cannot
+follow a jump: each node crossing rings the mesh's own modes, which the
+undamped step keeps.  The pad's dashpot turns the rail's ringing velocity
+into rail-seat load, a spurious 1 to 5 kN on the paper's track
+(eta1 = 1e6 N s/m) that neither a finer mesh nor a smaller step removes.
+There the step is HHT-alpha (Hilber, Hughes & Taylor 1977) by default.
 
 Besides the static state, a run may start from a harmonic-balance solution
 or from an explicit ring state (`railtrack.timedomain.ring_state`): that is how
@@ -25,6 +33,7 @@ The steps themselves are in `railtrack.timedomain.newmark`.
 
 from __future__ import annotations
 
+import warnings
 from typing import Any
 
 import numpy as np
@@ -44,6 +53,7 @@ from ..model.passage import Passage
 from .td_solution import TimeDomainSolution
 from ..model.track import Track
 from ..model.train import Train
+from ..solvers.solution import ConvergenceWarning
 
 __all__ = [
     "TimeDomainSolution",
@@ -53,6 +63,9 @@ __all__ = [
     "NonFiniteLawError",
     "GROWTH_LIMIT",
 ]
+
+DEFAULT_TIMOSHENKO_ALPHA = 0.1
+"""HHT's alpha on a Timoshenko rail unless told (`simulate_time_domain`, issue 27)."""
 
 GROWTH_LIMIT = 1e4
 """A sleeper deflection this many times the static one means the track is unstable."""
@@ -94,6 +107,7 @@ def simulate_time_domain(
     wheel=None,
     profile=None,
     timoshenko=None,
+    hht_alpha: float | None = None,
 ) -> TimeDomainSolution:
     """Periodic steady response of the track by finite elements and Newmark time stepping.
 
@@ -105,7 +119,8 @@ def simulate_time_domain(
         M u'' + C u' + K u + U f(U^T u, U^T u') = P(t),
 
     with P(t) the consistent loads of the moving wheels.  It is integrated
-    with the average-acceleration Newmark scheme (Newmark 1959) and Newton
+    with the average-acceleration Newmark scheme (Newmark 1959), or HHT-alpha
+    (`hht_alpha`), and Newton
     iterations on the sleeper DOFs at each step, period after period, until
     sleeper 0's response over a period changes by at most ``tol`` times its
     peak.
@@ -193,9 +208,32 @@ def simulate_time_domain(
         whose own interpolation plus the local sag g(xi) P carries the wheels
         (`railtrack.timedomain.ring_wheels`); default the Euler–Bernoulli rail.
         Its slope jumps by R / kGA above each point-supported sleeper, which
-        the wheels feel, and its undamped higher pinned-pinned modes may keep
-        the wheels' period change near 1e-4.  The time-step error estimate and
+        the wheels feel; with ``hht_alpha=0`` its undamped higher modes may
+        keep the wheels' period change above 1e-4.  The time-step error estimate and
         a harmonic-balance start stay those of the Euler–Bernoulli rail.
+
+        The rail's velocity jumps wherever a load passes, and the FE ring
+        cannot carry a jump: outputs that read the rail's velocity, the
+        rail-seat load (through the pad's dashpot) above all, ring with the
+        mesh unless `hht_alpha` damps it.  Even then they converge only once
+        the elements are short against the shear length sqrt(EI / kGA)
+        (0.16 m on UIC60): on the paper's track at 45 m/s (constant loads)
+        the peak rail-seat load is 26.6 to 26.9 kN from 32 elements per span
+        on (h = 19 mm, 3600 to 14400 steps per period), but 26.8 to 27.6 kN
+        at 4 to 16, against 27.1 to 28.7 kN at any mesh with average
+        acceleration (Euler–Bernoulli: 25.43 kN at every mesh; with wheels on
+        the 0.5 mm dip 27.42, 27.27, 27.21 kN at 8, 16, 32 elements per span;
+        issue 27, `tests/test_ring_timoshenko.py`).  The point support itself is a
+        limit: on it the rail-seat load jumps when a wheel passes the
+        sleeper (the rail's velocity there jumps, the dashpot follows); a
+        real pad spreads the load over its width.
+    hht_alpha : float or None
+        HHT-alpha's alpha in [0, 1/3] (`railtrack.timedomain.newmark.NewmarkStepper`):
+        0 is average acceleration; a larger alpha damps the modes the step
+        does not resolve (as omega dt -> inf an amplitude falls by
+        (1 - alpha) / (1 + alpha) per step), while a resolved one loses about
+        alpha (omega dt)^4 / 10 of its amplitude per step.  Default: 0 on the
+        Euler–Bernoulli rail, 0.1 on a Timoshenko rail.
 
     Returns
     -------
@@ -224,6 +262,10 @@ def simulate_time_domain(
     LongRunWarning
         If the run is estimated to take more than a minute
         (`railtrack.timedomain.runcost.LONG_RUN_SECONDS`), with the estimate.
+    railtrack.ConvergenceWarning
+        If the response has not repeated to `tol` within `max_periods`
+        (``converged=False``), with the last period's change; not when
+        ``min_periods == max_periods``, a run of a fixed length asked for.
 
     Examples
     --------
@@ -291,10 +333,13 @@ def simulate_time_domain(
         estimated, linearized_at = cell.stand_in(passage, u[mesh.sleeper_dofs]), 0.0
     step_error = check_step_error(*estimated, linearized_at, steps_per_period,
                                   elements_per_span, warn_step_error)
+    if hht_alpha is None:
+        hht_alpha = 0.0 if timoshenko is None else DEFAULT_TIMOSHENKO_ALPHA
     stepper = NewmarkStepper(mesh, law, reference, dt, loads, newton_abs, max_newton_iterations,
-                             weight)
+                             weight, hht_alpha)
     if wheel is not None:
         u, stepper = attach_wheels(stepper, wheel, profile, u, times, reference[0], wagons)
+    (stepper if wheel is None else stepper.stepper).start(u, v)
     every_sleeper = cell is not None and not cell.uniform
     recorder = SleeperRecorder(mesh, n_steps)
 
@@ -350,6 +395,12 @@ def simulate_time_domain(
         if every_sleeper:
             previous_all[:] = record
 
+    if not converged and max_periods > min_periods:
+        last = f"{changes[-1]:.3g}" if changes else "not measured (one period)"
+        warnings.warn(ConvergenceWarning(
+            f"the ring's response did not repeat to tol = {tol:g} within max_periods = "
+            f"{max_periods} (last period's change {last}): raise max_periods, or check the "
+            "track's damping; the result has converged=False"), stacklevel=2)
     return TimeDomainSolution(
         times=times,
         sleeper_displacement=record[:, 0].copy(),

@@ -37,7 +37,10 @@ class TimeDomainSolution:
         Periods integrated.
     converged : bool
         Whether the last period's sleeper-0 response differed from the one
-        before by at most ``tol`` times its peak.
+        before by at most ``tol`` times its peak: the state repeats, which
+        says nothing of the mesh or the step (on a Timoshenko rail the
+        rail-seat load needs a fine mesh, `simulate_time_domain`'s
+        ``timoshenko``); ``False`` comes with a `railtrack.ConvergenceWarning`.
     period_change : ndarray, shape (periods - 1,)
         max |w_k - w_{k-1}| / max |w_k| between consecutive periods k [-].
     elements_per_span : int
