@@ -19,11 +19,13 @@ the run then damps out.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..timedomain.spectrum import record_spectrum
+from ..solvers.solution import ConvergenceWarning
 from ..timedomain.simulation import simulate_time_domain
 from ..model.track import Track
 from ..model.train import Train
@@ -112,10 +114,13 @@ def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span
         if previous is not None:
             u, v = state
             state = (u, v * (speed / previous))
-        result = simulate_time_domain(track, train.replace(speed=float(speed)), foundation,
-                                      elements_per_span, steps_per_period, tol=tol,
-                                      max_periods=max_periods, start=state,
-                                      warn_step_error=warn_step_error)
+        with warnings.catch_warnings():
+            # SpeedRamp.converged reports each speed; a warning per speed would repeat it
+            warnings.simplefilter("ignore", ConvergenceWarning)
+            result = simulate_time_domain(track, train.replace(speed=float(speed)), foundation,
+                                          elements_per_span, steps_per_period, tol=tol,
+                                          max_periods=max_periods, start=state,
+                                          warn_step_error=warn_step_error)
         results.append(result)
         state, previous = result.final_state, speed
     return SpeedRamp(
