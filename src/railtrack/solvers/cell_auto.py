@@ -26,12 +26,20 @@ import numpy as np
 
 from ..equations.cell_harmonic_balance import _forces, _synthesize, cell_operators
 from ..model.passage import Passage
-from .arguments import require_count, require_fraction
-from .auto_harmonics import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION
+from .arguments import require_count
+from .auto_harmonics import AUTO_ROUNDS, DEFAULT_ACCURACY
 from .cell_newton import solve_cell
 from .cell_solution import CellSolution
 from .diagnosis import report
-from .foundation_at_rest import check_foundation_at_rest
+from .guards import (
+    check_laws_at_rest,
+    checked_accuracy,
+    checked_stability,
+    checked_tol,
+    look_at_stability,
+    refuse_unused,
+    truncation_limit,
+)
 from .truncation import auto_samples, grown_harmonics, predict_harmonics
 
 __all__ = ["cell_truncation", "solve_cell_auto", "solve_track_cell", "MAX_CELL_HARMONICS"]
@@ -127,53 +135,55 @@ def solve_cell_auto(passage: Passage, cell, *, accuracy: float = DEFAULT_ACCURAC
 def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton", *,
                      accuracy=None, tol=None, max_iterations=None, samples=None, initial=None,
                      strict: bool = False, check_foundation: bool = True,
-                     stability: str = "quick") -> CellSolution:
+                     stability: str = "quick", split=None, fallback=None) -> CellSolution:
     """`railtrack.solve` for a `SleeperCell`: Newton, an explicit m or "auto".
 
-    Arguments as `railtrack.solve`.  Stability is not judged for a cell (its
-    Floquet multipliers are not computed): "quick" and "off" skip it, "full"
-    is refused.  `split` and `fallback` do not apply.
+    Arguments as `railtrack.solve`, checked by `railtrack.solvers.guards`
+    as for one sleeper.  After a converged solve the stability look of
+    `railtrack.solvers.stability_hint` is called as for one sleeper; "full"
+    is refused (no `Floquet` is kept on a `CellSolution`).  `split` and
+    `fallback` are refused: there is no fixed point and no speed path here.
     """
     if method != "newton":
         raise ValueError(f"a SleeperCell is solved by method='newton' only; got {method!r}")
+    refuse_unused("the SleeperCell path (Newton)",
+                  split=(split, "a fixed-point setting"),
+                  fallback=(fallback, "no speed path for a cell"))
+    stability = checked_stability(stability)
     if stability == "full":
-        raise ValueError("stability='full' is not available for a SleeperCell (its Floquet "
-                         "multipliers are not computed); use 'quick' or 'off'")
-    if stability not in ("quick", "off"):
-        raise ValueError(f'stability must be "quick", "full" or "off"; got {stability!r}')
+        raise ValueError("stability='full' is not available for a SleeperCell (no Floquet "
+                         "result is kept on a CellSolution); use 'quick' or 'off', or check "
+                         "the state with railtrack.simulate_time_domain")
     passage = Passage(track, train)
     _compare_with_track(track, cell)
     arrays = [f for part in (track, train) for f, v in vars(part).items()
               if not isinstance(v, tuple) and np.ndim(v) > 0]
     if arrays:
         raise ValueError(f"solve takes a track and a train with scalar fields; {arrays} are arrays")
-    if check_foundation:
-        for law, k1, eta1 in zip(cell.foundations, cell.pad_stiffness, cell.pad_damping):
-            check_foundation_at_rest(law, float(k1), float(eta1))
-    tol = 1e-10 if tol is None else require_fraction("tol", tol)
+    check_laws_at_rest(cell.foundations, cell.pad_stiffness, cell.pad_damping, check_foundation)
+    tol = checked_tol(tol, 1e-10)
     iterations = 50 if max_iterations is None else require_count("max_iterations",
                                                                  max_iterations, 0)
     automatic = isinstance(harmonics, str) and harmonics == "auto"
+    accuracy = checked_accuracy(accuracy, automatic, stacklevel=4)
     if automatic:
         if samples is not None or initial is not None:
             raise ValueError("samples and initial need an explicit harmonics=m; "
                              "'auto' chooses m itself")
-        accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy",
-                                                                               accuracy)
         result = solve_cell_auto(passage, cell, accuracy=accuracy, tol=tol,
                                  max_iterations=iterations)
-        limit = accuracy
     else:
         require_count("harmonics", harmonics, 1)
         result = solve_cell(passage, cell, int(harmonics), tol=tol, max_iterations=iterations,
                             samples=samples, initial=initial)
         if result.converged:
             result = replace(result, truncation_error=cell_truncation(result)[0])
-        limit = WARN_TRUNCATION
-    return report(result, strict, limit,
-                  f"harmonics={result.harmonics}: the estimated truncation error is "
-                  f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
-                  f"larger harmonics")
+    result = report(result, strict, truncation_limit(automatic, accuracy),
+                    f"harmonics={result.harmonics}: the estimated truncation error is "
+                    f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
+                    f"larger harmonics")
+    look_at_stability(result, stability, stacklevel=5)
+    return result
 
 
 def _compare_with_track(track, cell) -> None:
