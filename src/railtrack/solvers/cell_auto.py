@@ -13,7 +13,10 @@ The error is the largest, over the sleepers, of the tail's max norm over
 the period relative to the largest sleeper peak in the cell.  "auto" starts
 from the m that `predict_harmonics` gives the stiffest-to-resolve law of the
 cell, and grows m (by at least 10 %) to what the solution's spectrum and its
-estimated tail need, at most `AUTO_ROUNDS` times.
+estimated tail need, at most `AUTO_ROUNDS` times.  A level that does not
+converge does not end the search: m grows by half, from the last converged
+level where there is one, up to `FAILED_LEVELS` failures in a row; the
+message lists each m tried and what happened there.
 """
 
 from __future__ import annotations
@@ -32,6 +35,7 @@ from .cell_newton import solve_cell
 from .cell_solution import CellSolution
 from .diagnosis import report
 from .guards import (
+    FAILED_LEVELS,
     check_laws_at_rest,
     checked_accuracy,
     checked_stability,
@@ -111,25 +115,36 @@ def solve_cell_auto(passage: Passage, cell, *, accuracy: float = DEFAULT_ACCURAC
     if not 0.0 < accuracy < 1.0:
         raise ValueError(f"accuracy must be in (0, 1); got {accuracy!r}")
     m = _first_harmonics(passage, cell, accuracy)
-    initial = None
-    for _ in range(AUTO_ROUNDS + 1):
+    initial, last, tried, failed, rounds = None, None, [], 0, 0
+    while True:
         result = solve_cell(passage, cell, m, tol=tol, max_iterations=max_iterations,
                             samples=auto_samples(m), initial=initial)
         if not result.converged:
-            return result
+            # a level that fails does not end the search: a gap law that no m near the
+            # prediction resolves converges above it (issue 27); start from the last
+            # converged level if there is one
+            failed += 1
+            tried.append(f"m = {m}: did not converge ({result.message})")
+            if failed >= FAILED_LEVELS or m >= MAX_CELL_HARMONICS:
+                break
+            m = min(MAX_CELL_HARMONICS, math.ceil(1.5 * m))
+            initial = None if last is None else np.pad(last, ((0, 0), (0, m + 1 - last.shape[1])))
+            continue
+        failed, rounds = 0, rounds + 1
         error, tail = cell_truncation(result)
         result = replace(result, truncation_error=error)
-        if error <= accuracy or m >= MAX_CELL_HARMONICS:
-            return result
+        tried.append(f"m = {m}: converged, estimated truncation error {error:.1e}")
+        if error <= accuracy or m >= MAX_CELL_HARMONICS or rounds > AUTO_ROUNDS:
+            break
         grown = max(grown_harmonics(np.concatenate([result.coefficients[j, m:], tail[j]])[:m + 1],
                                     np.concatenate([result.coefficients[j, m:], tail[j]])[m + 1:],
                                     0.8 * accuracy)
                     for j in range(result.sleepers))
         bigger = min(MAX_CELL_HARMONICS, max(math.ceil(1.1 * m), grown))
-        initial = np.concatenate([result.coefficients[:, m:], tail], axis=1)[:, :bigger + 1]
-        m = bigger
-    return result
-
+        last = np.concatenate([result.coefficients[:, m:], tail], axis=1)[:, :bigger + 1]
+        initial, m = last, bigger
+    return replace(result, message=f"{result.message}; harmonics='auto' tried "
+                   + "; ".join(tried))
 
 
 def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton", *,

@@ -12,7 +12,8 @@ for what must not differ between them:
 * the arguments a path does not use (`refuse_unused`): refused with the
   reason, never ignored;
 * the truncation warning's threshold (`truncation_limit`);
-* the quick stability look after a converged solve (`look_at_stability`).
+* the quick stability look after a converged solve (`look_at_stability`);
+* how many failed levels harmonics="auto" steps past (`FAILED_LEVELS`).
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ from .auto_harmonics import DEFAULT_ACCURACY, WARN_TRUNCATION
 from .foundation_at_rest import check_foundation_at_rest
 from .stability_hint import STABILITY_MODES, judge_stability
 
-__all__ = ["LARGEST_TOL", "checked_tol", "checked_accuracy", "check_laws_at_rest",
+__all__ = ["LARGEST_TOL", "FAILED_LEVELS", "checked_tol", "checked_accuracy", "check_laws_at_rest",
            "refuse_unused", "truncation_limit", "checked_stability", "look_at_stability"]
 
 LARGEST_TOL = 1e-2
@@ -36,6 +37,11 @@ point itself can pass: with wheels, tol = 0.5 accepted the constant-force
 start after 0 steps, a mean contact force 14.6 kN (19 % of Q) off the static
 load and a loss of contact that does not happen.  Asking for less than 1 %
 of the load is asking for no solution at all."""
+
+
+FAILED_LEVELS = 3
+"""harmonics="auto" (cells and wheels) steps up in m past a level that fails to converge, and
+gives up after this many failures in a row."""
 
 
 def checked_tol(tol, default: float) -> float:

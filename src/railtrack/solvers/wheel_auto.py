@@ -78,7 +78,14 @@ def wheel_cell(passage: Passage, support, profile) -> SleeperCell:
         raise ValueError(f"the wagon length H = {wagon} m must be a whole number of cells "
                          f"(N L = {length} m) for a steady state with wheels")
     x = np.linspace(0.0, wagon, 2048, endpoint=False)
+    if not callable(profile):
+        raise TypeError(f"profile must be a callable r(x) [m], e.g. railtrack.CosineDip(...); "
+                        f"got {type(profile).__name__} {profile!r}")
     here, there = np.asarray(profile(x), float), np.asarray(profile(x + length), float)
+    if here.shape != x.shape or there.shape != x.shape:
+        raise ValueError(f"the profile r(x) must return an array shaped like x (one height "
+                         f"[m] per position); for x of shape {x.shape} it returned shape "
+                         f"{here.shape}: use numpy operations, e.g. np.zeros_like(x)")
     if not np.all(np.isfinite(here)):
         raise ValueError("the profile r(x) is not finite along the wagon length")
     size = max(float(np.max(np.abs(here))), 1e-12)

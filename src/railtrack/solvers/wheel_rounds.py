@@ -17,15 +17,14 @@ from dataclasses import replace
 import numpy as np
 
 from ..equations.wheel_harmonic_balance import profile_harmonics
+from .guards import FAILED_LEVELS
 from .wheel_newton import solve_wheels
 from .wheel_solution import WheelSolution
 
-__all__ = ["auto_wheels", "wrap", "MAX_HARMONICS", "FAILED_LEVELS"]
+__all__ = ["auto_wheels", "wrap", "MAX_HARMONICS"]
 
 MAX_HARMONICS = 1200
 """The largest m "auto" takes with wheels."""
-FAILED_LEVELS = 3
-"""Levels in a row that may fail to converge before "auto" gives up."""
 
 RAIL_FIELD_NOTE = (
     "with wheels the rail between the sleepers also carries the wheels' varying forces, which "
