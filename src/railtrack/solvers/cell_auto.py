@@ -42,6 +42,7 @@ from .guards import (
     checked_tol,
     look_at_stability,
     refuse_unused,
+    require_scalar_fields,
     truncation_limit,
 )
 from .truncation import auto_samples, grown_harmonics, predict_harmonics
@@ -171,10 +172,7 @@ def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton
                          "the state with railtrack.simulate_time_domain")
     passage = Passage(track, train)
     _compare_with_track(track, cell)
-    arrays = [f for part in (track, train) for f, v in vars(part).items()
-              if not isinstance(v, tuple) and np.ndim(v) > 0]
-    if arrays:
-        raise ValueError(f"solve takes a track and a train with scalar fields; {arrays} are arrays")
+    require_scalar_fields(track, train)
     check_laws_at_rest(cell.foundations, cell.pad_stiffness, cell.pad_damping, check_foundation)
     tol = checked_tol(tol, 1e-10)
     iterations = 50 if max_iterations is None else require_count("max_iterations",

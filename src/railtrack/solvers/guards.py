@@ -20,13 +20,16 @@ from __future__ import annotations
 
 import warnings
 
+import numpy as np
+
 from .arguments import require_fraction
 from .auto_harmonics import DEFAULT_ACCURACY, WARN_TRUNCATION
 from .foundation_at_rest import check_foundation_at_rest
 from .stability_hint import STABILITY_MODES, judge_stability
 
-__all__ = ["LARGEST_TOL", "FAILED_LEVELS", "checked_tol", "checked_accuracy", "check_laws_at_rest",
-           "refuse_unused", "truncation_limit", "checked_stability", "look_at_stability"]
+__all__ = ["LARGEST_TOL", "FAILED_LEVELS", "checked_tol", "checked_accuracy",
+           "check_laws_at_rest", "refuse_unused", "require_scalar_fields", "truncation_limit",
+           "checked_stability", "look_at_stability"]
 
 LARGEST_TOL = 1e-2
 """The loosest tol any path accepts [-].
@@ -83,6 +86,15 @@ def check_laws_at_rest(laws, pad_stiffness, pad_damping, check_foundation: bool)
         if key not in seen:
             seen.add(key)
             check_foundation_at_rest(law, float(k1), float(eta1))
+
+
+def require_scalar_fields(track, train) -> None:
+    """Refuse a track or a train with an array field: `railtrack.solve` solves one case."""
+    batched = [f for part in (track, train) for f, v in vars(part).items()
+               if not isinstance(v, tuple) and np.ndim(v) > 0]
+    if batched:
+        raise ValueError(f"solve takes a track and a train with scalar fields; {batched} are "
+                         "arrays (for a batch of linear tracks use railtrack.sweep_speeds)")
 
 
 def refuse_unused(path: str, **given) -> None:

@@ -28,20 +28,22 @@ from .auto_harmonics import (
     truncation_warning,
 )
 from .diagnosis import convergence_error
-from .fixed_point import SolverOutcome, automatic_split, contraction_factors, iterate_fixed_point
 from .guards import (
     check_laws_at_rest,
     checked_accuracy,
     checked_stability,
     checked_tol,
     look_at_stability,
+    require_scalar_fields,
     truncation_limit,
 )
 from ..model.cell import SleeperCell
 from ..model.foundations import as_foundation
 from ..equations.harmonic_balance import HarmonicSystem, residual, residual_norm, two_sided
 from ..equations.linear import analytic_coefficients
-from .newton import iterate_newton, linear_guess
+from .fixed_point import SolverOutcome, iterate_fixed_point
+from .methods import check_method_arguments, run_method
+from .newton import iterate_newton
 from .cell_auto import solve_track_cell
 from .wheel_auto import solve_track_wheels
 from .conditioning import check_conditioning
@@ -55,6 +57,8 @@ from .truncation import estimate_of
 __all__ = ["solve", "METHODS", "DEFAULT_ACCURACY", "WARN_TRUNCATION"]
 
 DEFAULT_TOL = 1e-10
+
+
 ANALYTIC_ROUND_OFF = 1e-8
 """Eq. (23) counts as solved when its residual in eq. (17) is finite and below this."""
 
@@ -229,33 +233,16 @@ def solve(
     if method not in METHODS:
         raise ValueError(f"method must be one of {sorted(METHODS)}; got {method!r}")
     passage = Passage(track, train)
-    batched = [f for part in (track, train) for f, v in vars(part).items()
-               if not isinstance(v, tuple) and np.ndim(v) > 0]
-    if batched:
-        raise ValueError(
-            f"solve takes a track and a train with scalar fields; {batched} are arrays "
-            "(for a batch of linear tracks use railtrack.sweep_speeds)"
-        )
+    require_scalar_fields(track, train)
     check_conditioning(passage)
     automatic = isinstance(harmonics, str) and harmonics == "auto"
     if not automatic:
         require_count("harmonics", harmonics, 1)
-    if method == "analytic":
-        ignored = [n for n, v in (("tol", tol), ("max_iterations", max_iterations),
-                                  ("initial", initial)) if v is not None]
-        if ignored:
-            warnings.warn(f"{', '.join(ignored)} not used by method='analytic' (eq. 23 is exact)")
+    check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split)
     accuracy = checked_accuracy(accuracy, automatic)
     tol = checked_tol(tol, DEFAULT_TOL)
     if max_iterations is not None:
         max_iterations = require_count("max_iterations", max_iterations, 0)
-    if automatic and (samples is not None or initial is not None):
-        raise ValueError("samples and initial need an explicit harmonics=m; "
-                         "'auto' chooses m itself")
-    if method != "fixed-point" and split is not None:
-        warnings.warn(f"split is used by method='fixed-point' only; ignored by {method!r}")
-    if split is not None and split != "auto":
-        require_count("split (N0)", split, 0)
     foundation = as_foundation(foundation)
     check_laws_at_rest([foundation], [float(passage.pad_stiffness)],
                        [float(passage.pad_damping)], check_foundation)
@@ -265,7 +252,8 @@ def solve(
 
     iterations, path = 0, None
     for _round in range(AUTO_ROUNDS + 1):
-        outcome, used_split, note = _run(method, system, tol, max_iterations, split, initial)
+        outcome, used_split, note = run_method(METHODS, method, system, tol, max_iterations,
+                                               split, initial)
         iterations += outcome.iterations
         if (fallback and method == "newton" and not outcome.converged and initial is None
                 and max_iterations is None and path is None):
@@ -321,26 +309,3 @@ def solve(
             method, message, passage, system.harmonics, stalled="line search" in outcome.message
             or path is not None)), stacklevel=2)
     return solution
-
-
-def _run(method, system, tol, max_iterations, split, initial):
-    """Resolve the split for this m, run the method; (outcome, split used, note on the split)."""
-    note, used = "", None
-    if method == "fixed-point":
-        if split is None:
-            used = system.harmonics
-        elif split == "auto":
-            # Factors about Newton's starting guess, not the law at rest: for a
-            # hardening law under a heavy load the two differ by orders.
-            start = linear_guess(system) if initial is None else initial
-            used = automatic_split(system, start)
-            worst = float(contraction_factors(system, used, start).max())
-            if worst >= 1:
-                note = (f"no split N0 in 0..{system.harmonics} makes every contraction factor "
-                        f"of eq. (21) < 1 (the best, N0 = {used}, has {worst:.3g})")
-        elif split > system.harmonics:
-            raise ValueError(f"split (N0) must be 'auto' or an integer in "
-                             f"0..{system.harmonics}; got {split!r}")
-        else:
-            used = int(split)
-    return METHODS[method](system, tol, max_iterations, used, initial), used, note
