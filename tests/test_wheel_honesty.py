@@ -122,6 +122,15 @@ def test_wheel_auto_steps_past_a_failed_level_and_says_so(monkeypatch):
     assert f"m = {result.harmonics}: converged" in result.message
 
 
+def test_wheel_auto_meets_the_accuracy_it_was_asked_against_a_finer_solve():
+    # levels 60, 90, 135 change P by 1.4e-2, 8.1e-3 Q: it stops at 135, 0.8 % from m = 240;
+    # stopping at 90 (an "auto" that accepted 100 x the accuracy) is 1.5 % off
+    result = rt.solve(TRACK, train(), LAW, wheel=WHEEL, profile=DIP, accuracy=1e-2)
+    fine = reference(45.0, DIP, 240)
+    t = fine.one_period(4096)
+    assert np.abs(result.contact_force(t) - fine.contact_force(t)).max() < 1e-2 * Q
+
+
 def test_cell_auto_steps_past_a_failed_level():
     # five sleepers hanging 1 mm: the first m (23) fails, larger ones converge
     passage = rt.Passage(TRACK, rt.Train.paper())
