@@ -18,6 +18,7 @@ for what must not differ between them:
 
 from __future__ import annotations
 
+import reprlib
 import warnings
 
 import numpy as np
@@ -108,11 +109,18 @@ def refuse_unused(path: str, **given) -> None:
     ValueError
         Naming every such argument, its value and why `path` does not use it.
     """
-    used = [f"{name}={value!r} ({why})" for name, (value, why) in given.items()
+    used = [f"{name}={_short(value)} ({why})" for name, (value, why) in given.items()
             if value is not None]
     if used:
         raise ValueError(f"{path} does not use " + "; ".join(used) + ": drop "
                          + ("it" if len(used) == 1 else "them"))
+
+
+def _short(value) -> str:
+    """A repr short enough for a message (an array of 601 zeros is not read)."""
+    if isinstance(value, np.ndarray):
+        return f"<array of shape {value.shape}>"
+    return reprlib.repr(value)
 
 
 def truncation_limit(automatic: bool, accuracy: float) -> float:
