@@ -16,7 +16,10 @@ tail is ``(-M omega_n^2 + Kbar + i omega_n Cbar) c_n + F^+_n``), whichever is
 larger: the load converges more slowly.  "auto" starts from the m that
 `predict_harmonics` gives the stiffest-to-resolve law of the cell, and grows
 m (by at least 10 %) to what both spectra and their estimated tails need, at
-most `AUTO_ROUNDS` times.
+most `AUTO_ROUNDS` times.  A level that does not converge does not end the
+search: m grows by half, from the last converged level where there is one,
+up to `FAILED_LEVELS` failures in a row; the message lists each m tried and
+what happened there.
 """
 
 from __future__ import annotations
@@ -29,13 +32,22 @@ import numpy as np
 
 from ..equations.cell_harmonic_balance import _forces, _synthesize, cell_operators
 from ..model.passage import Passage
-from .arguments import require_count, require_fraction
-from .auto_harmonics import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION
+from .arguments import require_count
+from .auto_harmonics import AUTO_ROUNDS, DEFAULT_ACCURACY
 from .cell_newton import solve_cell
 from .cell_solution import CellSolution
 from .diagnosis import report
-from .foundation_at_rest import check_foundation_at_rest
-from .stability_hint import judge_stability
+from .guards import (
+    FAILED_LEVELS,
+    check_laws_at_rest,
+    checked_accuracy,
+    checked_stability,
+    checked_tol,
+    look_at_stability,
+    refuse_unused,
+    require_scalar_fields,
+    truncation_limit,
+)
 from .truncation import auto_samples, grown_harmonics, predict_harmonics
 
 __all__ = ["cell_truncation", "cell_truncation_errors", "cell_grown_harmonics",
@@ -169,74 +181,80 @@ def solve_cell_auto(passage: Passage, cell, *, accuracy: float = DEFAULT_ACCURAC
     if not 0.0 < accuracy < 1.0:
         raise ValueError(f"accuracy must be in (0, 1); got {accuracy!r}")
     m = _first_harmonics(passage, cell, accuracy)
-    initial = None
-    for _ in range(AUTO_ROUNDS + 1):
+    initial, last, tried, failed, rounds = None, None, [], 0, 0
+    while True:
         result = solve_cell(passage, cell, m, tol=tol, max_iterations=max_iterations,
                             samples=auto_samples(m), initial=initial)
         if not result.converged:
-            return result
+            # a level that fails does not end the search: a gap law that no m near the
+            # prediction resolves converges above it (issue 27); start from the last
+            # converged level if there is one
+            failed += 1
+            tried.append(f"m = {m}: did not converge ({result.message})")
+            if failed >= FAILED_LEVELS or m >= MAX_CELL_HARMONICS:
+                break
+            m = min(MAX_CELL_HARMONICS, math.ceil(1.5 * m))
+            initial = None if last is None else np.pad(last, ((0, 0), (0, m + 1 - last.shape[1])))
+            continue
+        failed, rounds = 0, rounds + 1
         errors, tail, seat_tail = cell_truncation_errors(result)
         error = max(errors.values())
         result = replace(result, truncation_error=error)
-        if error <= accuracy or m >= MAX_CELL_HARMONICS:
-            return result
+        tried.append(f"m = {m}: converged, estimated truncation error {error:.1e}")
+        if error <= accuracy or m >= MAX_CELL_HARMONICS or rounds > AUTO_ROUNDS:
+            break
         grown = cell_grown_harmonics(result, tail, seat_tail, 0.8 * accuracy)
         bigger = min(MAX_CELL_HARMONICS, max(math.ceil(1.1 * m), grown))
-        initial = np.concatenate([result.coefficients[:, m:], tail], axis=1)[:, :bigger + 1]
-        m = bigger
-    return result
-
+        last = np.concatenate([result.coefficients[:, m:], tail], axis=1)[:, :bigger + 1]
+        initial, m = last, bigger
+    return replace(result, message=f"{result.message}; harmonics='auto' tried "
+                   + "; ".join(tried))
 
 
 def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton", *,
                      accuracy=None, tol=None, max_iterations=None, samples=None, initial=None,
                      strict: bool = False, check_foundation: bool = True,
-                     stability: str = "quick") -> CellSolution:
+                     stability: str = "quick", split=None, fallback=None) -> CellSolution:
     """`railtrack.solve` for a `SleeperCell`: Newton, an explicit m or "auto".
 
-    Arguments as `railtrack.solve`.  Stability is judged as for one sleeper,
-    with Hill's matrix of the cell (`railtrack.solvers.stability_hint`):
-    "quick" warns, "full" keeps the multipliers on the result's `stability`.
-    `split` and `fallback` do not apply.
+    Arguments as `railtrack.solve`, checked by `railtrack.solvers.guards`
+    as for one sleeper.  Stability is judged as for one sleeper, with Hill's
+    matrix of the cell (`railtrack.solvers.stability_hint`): "quick" warns,
+    "full" keeps the multipliers on the result's `stability`.  `split` and
+    `fallback` are refused: there is no fixed point and no speed path here.
     """
     if method != "newton":
         raise ValueError(f"a SleeperCell is solved by method='newton' only; got {method!r}")
-    if stability not in ("quick", "full", "off"):
-        raise ValueError(f'stability must be "quick", "full" or "off"; got {stability!r}')
+    refuse_unused("the SleeperCell path (Newton)",
+                  split=(split, "a fixed-point setting"),
+                  fallback=(fallback, "no speed path for a cell"))
+    stability = checked_stability(stability)
     passage = Passage(track, train)
     _compare_with_track(track, cell)
-    arrays = [f for part in (track, train) for f, v in vars(part).items()
-              if not isinstance(v, tuple) and np.ndim(v) > 0]
-    if arrays:
-        raise ValueError(f"solve takes a track and a train with scalar fields; {arrays} are arrays")
-    if check_foundation:
-        for law, k1, eta1 in zip(cell.foundations, cell.pad_stiffness, cell.pad_damping):
-            check_foundation_at_rest(law, float(k1), float(eta1))
-    tol = 1e-10 if tol is None else require_fraction("tol", tol)
+    require_scalar_fields(track, train)
+    check_laws_at_rest(cell.foundations, cell.pad_stiffness, cell.pad_damping, check_foundation)
+    tol = checked_tol(tol, 1e-10)
     iterations = 50 if max_iterations is None else require_count("max_iterations",
                                                                  max_iterations, 0)
     automatic = isinstance(harmonics, str) and harmonics == "auto"
+    accuracy = checked_accuracy(accuracy, automatic, stacklevel=4)
     if automatic:
         if samples is not None or initial is not None:
             raise ValueError("samples and initial need an explicit harmonics=m; "
                              "'auto' chooses m itself")
-        accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy",
-                                                                               accuracy)
         result = solve_cell_auto(passage, cell, accuracy=accuracy, tol=tol,
                                  max_iterations=iterations)
-        limit = accuracy
     else:
         require_count("harmonics", harmonics, 1)
         result = solve_cell(passage, cell, int(harmonics), tol=tol, max_iterations=iterations,
                             samples=samples, initial=initial)
         if result.converged:
             result = replace(result, truncation_error=cell_truncation(result)[0])
-        limit = WARN_TRUNCATION
-    result = report(result, strict, limit,
+    result = report(result, strict, truncation_limit(automatic, accuracy),
                     f"harmonics={result.harmonics}: the estimated truncation error is "
                     f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
                     f"larger harmonics")
-    judged = judge_stability(result, stability, stacklevel=4)
+    judged = look_at_stability(result, stability, stacklevel=5)
     return result if judged is None else replace(result, stability=judged)
 
 

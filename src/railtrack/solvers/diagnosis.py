@@ -72,18 +72,22 @@ def _listed(harmonics: list[int], shown: int = 12) -> str:
     return f"{str(harmonics[:shown])[:-1]}, ... ({len(harmonics)} in all)]"
 
 
-def report(result, strict: bool, limit: float, truncation: str):
+def report(result, strict: bool, limit: float, truncation: str, quiet: bool = False):
     """Return `result` after telling its caller what went wrong, as the caller asked.
 
     A result that did not converge raises `ConvergenceError` with ``strict``
     and warns `ConvergenceWarning` otherwise; a converged one whose
     ``truncation_error`` exceeds `limit` warns `TruncationWarning` with the
-    text `truncation`.  The warnings point at the user's call to `railtrack.solve`.
+    text `truncation`.  ``quiet``: an unconverged result that spent the caller's
+    explicit max_iterations does not warn (as `railtrack.solve` for one
+    sleeper: a budget the caller set).  The warnings point at the user's call
+    to `railtrack.solve`.
     """
     if not result.converged:
         if strict:
             raise ConvergenceError(result.message, result, [])
-        warnings.warn(result.message, ConvergenceWarning, stacklevel=4)
+        if not quiet:
+            warnings.warn(result.message, ConvergenceWarning, stacklevel=4)
     elif result.truncation_error > limit:
         warnings.warn(truncation, TruncationWarning, stacklevel=4)
     return result

@@ -17,29 +17,37 @@ import warnings
 
 import numpy as np
 
-from .arguments import require_count, require_fraction
+from .arguments import require_count
 from .auto_harmonics import (
     AUTO_ROUNDS,
     DEFAULT_ACCURACY,
     WARM_START_ABOVE as WARM_START_ABOVE,
-    WARN_TRUNCATION,
+    WARN_TRUNCATION as WARN_TRUNCATION,
     first_system,
     next_system,
     truncation_warning,
 )
 from .diagnosis import convergence_error
-from .fixed_point import SolverOutcome, automatic_split, contraction_factors, iterate_fixed_point
-from .foundation_at_rest import check_foundation_at_rest
+from .guards import (
+    check_laws_at_rest,
+    checked_accuracy,
+    checked_stability,
+    checked_tol,
+    look_at_stability,
+    require_scalar_fields,
+    truncation_limit,
+)
 from ..model.cell import SleeperCell
 from ..model.foundations import as_foundation
 from ..equations.harmonic_balance import HarmonicSystem, residual, residual_norm, two_sided
 from ..equations.linear import analytic_coefficients
-from .newton import iterate_newton, linear_guess
+from .fixed_point import SolverOutcome, iterate_fixed_point
+from .methods import check_method_arguments, run_method
+from .newton import iterate_newton
 from .cell_auto import solve_track_cell
 from .wheel_auto import solve_track_wheels
 from .conditioning import check_conditioning
 from .solution import ConvergenceWarning, Solution
-from .stability_hint import judge_stability
 from .speed_path import not_converged_advice, speed_path
 from ..model.passage import Passage
 from ..model.track import Track
@@ -49,6 +57,8 @@ from .truncation import estimate_of
 __all__ = ["solve", "METHODS", "DEFAULT_ACCURACY", "WARN_TRUNCATION"]
 
 DEFAULT_TOL = 1e-10
+
+
 ANALYTIC_ROUND_OFF = 1e-8
 """Eq. (23) counts as solved when its residual in eq. (17) is finite and below this."""
 
@@ -94,7 +104,7 @@ def solve(
     initial: np.ndarray | None = None,
     strict: bool = False,
     check_foundation: bool = True,
-    fallback: bool = True,
+    fallback: bool | None = None,
     stability: str = "quick",
     wheel=None,
     profile=None,
@@ -125,8 +135,9 @@ def solve(
         peak, 0 < accuracy < 1 (default 1e-3).
     tol : float, optional
         Converged when the relative residual ``||R|| / ||F||`` of eq. (17)
-        is <= tol, 0 < tol < 1 (default 1e-10).  Not used by "analytic",
-        which is exact up to round-off.
+        is <= tol, 0 < tol <= 1e-2 (default 1e-10; a looser tol would pass
+        the starting point, `railtrack.solvers.guards.LARGEST_TOL`).  Not used
+        by "analytic", which is exact up to round-off.
     max_iterations : int, optional
         Newton steps (default 100) or fixed-point iterations k (default 100,
         the paper's choice); 0 evaluates the starting point only.
@@ -150,7 +161,8 @@ def solve(
         whose stiffness at rest is positive passes; to solve a law that is
         deliberately unstable at rest, pass False, and check the answer with
         `railtrack.simulate_time_domain`.
-    fallback : bool
+    fallback : bool, optional
+        One sleeper only (default True; a `SleeperCell` or wheels refuse it).
         Where Newton fails from its linear guess (no `initial` given), follow
         the branch of solutions in speed up from half the speed
         (`railtrack.solvers.speed_path`) and land on this speed; the message
@@ -160,7 +172,11 @@ def solve(
         Put a wheel of this unsprung mass on a Hertz spring under every axle
         (`railtrack.Wheel`); returns a `WheelSolution`
         (`railtrack.solvers.wheel_auto`): contact forces, wheel and sleeper
-        histories.  Newton only; `accuracy`, `tol` and `strict` apply.
+        histories.  Newton only; `accuracy`, `tol`, `max_iterations`,
+        `samples`, `check_foundation` and `strict` apply, `initial`, `split` and
+        `fallback` are refused; the quick stability look is not done for
+        wheels, and "full" is refused (`railtrack.simulate_time_domain` with
+        ``wheel=`` is the check).
     profile : callable, optional
         The rail-top profile r(x) [m] under the wheels (default: smooth;
         `railtrack.CosineDip` for a dipped weld); it must repeat with the
@@ -198,60 +214,46 @@ def solve(
     (True, True)
     >>> w = solution.sleeper_displacement([0.0, 0.1])    # metres, w < 0 is down
     """
+    stability = checked_stability(stability)
     if wheel is not None:
-        return solve_track_wheels(track, train, foundation, wheel, profile, harmonics,
-                                  accuracy=accuracy, tol=1e-9 if tol is None else tol,
-                                  strict=strict)
+        return solve_track_wheels(track, train, foundation, wheel, profile, harmonics, method,
+                                  accuracy=accuracy, tol=tol, max_iterations=max_iterations,
+                                  split=split, samples=samples, initial=initial, strict=strict,
+                                  check_foundation=check_foundation, fallback=fallback,
+                                  stability=stability)
     if profile is not None:
         raise ValueError("a profile is felt through wheels: pass wheel=railtrack.Wheel(...)")
     if isinstance(foundation, SleeperCell):
         return solve_track_cell(track, train, foundation, harmonics, method, accuracy=accuracy,
                                 tol=tol, max_iterations=max_iterations, samples=samples,
                                 initial=initial, strict=strict, stability=stability,
-                                check_foundation=check_foundation)
+                                check_foundation=check_foundation, split=split,
+                                fallback=fallback)
+    fallback = True if fallback is None else fallback
     if method not in METHODS:
         raise ValueError(f"method must be one of {sorted(METHODS)}; got {method!r}")
     passage = Passage(track, train)
-    batched = [f for part in (track, train) for f, v in vars(part).items()
-               if not isinstance(v, tuple) and np.ndim(v) > 0]
-    if batched:
-        raise ValueError(
-            f"solve takes a track and a train with scalar fields; {batched} are arrays "
-            "(for a batch of linear tracks use railtrack.sweep_speeds)"
-        )
+    require_scalar_fields(track, train)
     check_conditioning(passage)
     automatic = isinstance(harmonics, str) and harmonics == "auto"
     if not automatic:
         require_count("harmonics", harmonics, 1)
-    if method == "analytic":
-        ignored = [n for n, v in (("tol", tol), ("max_iterations", max_iterations),
-                                  ("initial", initial)) if v is not None]
-        if ignored:
-            warnings.warn(f"{', '.join(ignored)} not used by method='analytic' (eq. 23 is exact)")
-    if accuracy is not None and not automatic:
-        warnings.warn("accuracy is used by harmonics='auto' only; ignored for an explicit m")
-    accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy", accuracy)
-    tol = DEFAULT_TOL if tol is None else require_fraction("tol", tol)
+    check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split)
+    accuracy = checked_accuracy(accuracy, automatic)
+    tol = checked_tol(tol, DEFAULT_TOL)
     if max_iterations is not None:
         max_iterations = require_count("max_iterations", max_iterations, 0)
-    if automatic and (samples is not None or initial is not None):
-        raise ValueError("samples and initial need an explicit harmonics=m; "
-                         "'auto' chooses m itself")
-    if method != "fixed-point" and split is not None:
-        warnings.warn(f"split is used by method='fixed-point' only; ignored by {method!r}")
-    if split is not None and split != "auto":
-        require_count("split (N0)", split, 0)
     foundation = as_foundation(foundation)
-    if check_foundation:
-        check_foundation_at_rest(foundation, float(passage.pad_stiffness),
-                                 float(passage.pad_damping))
+    check_laws_at_rest([foundation], [float(passage.pad_stiffness)],
+                       [float(passage.pad_damping)], check_foundation)
 
     m, target, spectrum, system, initial = first_system(
         passage, foundation, harmonics, automatic, method, accuracy, samples, initial)
 
     iterations, path = 0, None
     for _round in range(AUTO_ROUNDS + 1):
-        outcome, used_split, note = _run(method, system, tol, max_iterations, split, initial)
+        outcome, used_split, note = run_method(METHODS, method, system, tol, max_iterations,
+                                               split, initial)
         iterations += outcome.iterations
         if (fallback and method == "newton" and not outcome.converged and initial is None
                 and max_iterations is None and path is None):
@@ -276,7 +278,7 @@ def solve(
     if automatic:
         message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
                     f"estimated truncation error {estimate:.1e})")
-    limit = accuracy if automatic else WARN_TRUNCATION
+    limit = truncation_limit(automatic, accuracy)
     if outcome.converged and np.isfinite(estimate) and estimate > limit:
         warnings.warn(truncation_warning(passage, foundation, m, estimate, automatic),
                       stacklevel=2)
@@ -296,7 +298,7 @@ def solve(
     )
     if strict and not solution.converged:
         raise convergence_error(method, outcome, solution, message)
-    judged = judge_stability(solution, stability)
+    judged = look_at_stability(solution, stability, stacklevel=4)
     if judged is not None:
         solution = dataclasses.replace(solution, stability=judged)
     budget_spent = max_iterations is not None and outcome.iterations >= max_iterations
@@ -307,26 +309,3 @@ def solve(
             method, message, passage, system.harmonics, stalled="line search" in outcome.message
             or path is not None)), stacklevel=2)
     return solution
-
-
-def _run(method, system, tol, max_iterations, split, initial):
-    """Resolve the split for this m, run the method; (outcome, split used, note on the split)."""
-    note, used = "", None
-    if method == "fixed-point":
-        if split is None:
-            used = system.harmonics
-        elif split == "auto":
-            # Factors about Newton's starting guess, not the law at rest: for a
-            # hardening law under a heavy load the two differ by orders.
-            start = linear_guess(system) if initial is None else initial
-            used = automatic_split(system, start)
-            worst = float(contraction_factors(system, used, start).max())
-            if worst >= 1:
-                note = (f"no split N0 in 0..{system.harmonics} makes every contraction factor "
-                        f"of eq. (21) < 1 (the best, N0 = {used}, has {worst:.3g})")
-        elif split > system.harmonics:
-            raise ValueError(f"split (N0) must be 'auto' or an integer in "
-                             f"0..{system.harmonics}; got {split!r}")
-        else:
-            used = int(split)
-    return METHODS[method](system, tol, max_iterations, used, initial), used, note

@@ -7,10 +7,8 @@ the smallest such cell: N = 1 for the smooth rail (the wheels feel the
 sleepers pass, harmonics p = H/L, 2H/L, ..), N = period / L for a profile
 with a `period` (a dipped weld once a wagon: N = H/L, every harmonic).
 
-"auto" solves at m, then 1.5 m, .. until two successive contact-force
-histories differ by at most ``accuracy`` times the largest static wheel
-load, and returns the finer one with that difference as
-``truncation_error``.
+"auto" is `railtrack.solvers.wheel_rounds`; an explicit m is estimated by
+`railtrack.solvers.wheel_truncation`.
 """
 
 from __future__ import annotations
@@ -19,18 +17,31 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..equations.wheel_harmonic_balance import profile_harmonics
 from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..model.profile import smooth_rail
-from .auto_harmonics import DEFAULT_ACCURACY
+from ..model.wheel import Wheel
+from .arguments import require_count
 from .diagnosis import report
+from .guards import (
+    check_laws_at_rest,
+    checked_accuracy,
+    checked_stability,
+    checked_tol,
+    refuse_unused,
+    truncation_limit,
+)
 from .wheel_newton import solve_wheels
+from .wheel_rounds import auto_wheels, wrap
 from .wheel_solution import WheelSolution
+from .wheel_truncation import wheel_truncation
 
 __all__ = ["solve_track_wheels", "wheel_cell"]
 
-MAX_HARMONICS = 1200
+DEFAULT_WHEEL_TOL = 1e-9
+"""The contact residual over the largest wheel load Q at which a wheel solve stops [-]."""
+DEFAULT_STEPS = 40
+"""Newton steps of a wheel solve, unless max_iterations says otherwise."""
 
 
 def wheel_cell(passage: Passage, support, profile) -> SleeperCell:
@@ -67,7 +78,14 @@ def wheel_cell(passage: Passage, support, profile) -> SleeperCell:
         raise ValueError(f"the wagon length H = {wagon} m must be a whole number of cells "
                          f"(N L = {length} m) for a steady state with wheels")
     x = np.linspace(0.0, wagon, 2048, endpoint=False)
+    if not callable(profile):
+        raise TypeError(f"profile must be a callable r(x) [m], e.g. railtrack.CosineDip(...); "
+                        f"got {type(profile).__name__} {profile!r}")
     here, there = np.asarray(profile(x), float), np.asarray(profile(x + length), float)
+    if here.shape != x.shape or there.shape != x.shape:
+        raise ValueError(f"the profile r(x) must return an array shaped like x (one height "
+                         f"[m] per position); for x of shape {x.shape} it returned shape "
+                         f"{here.shape}: use numpy operations, e.g. np.zeros_like(x)")
     if not np.all(np.isfinite(here)):
         raise ValueError("the profile r(x) is not finite along the wagon length")
     size = max(float(np.max(np.abs(here))), 1e-12)
@@ -78,10 +96,34 @@ def wheel_cell(passage: Passage, support, profile) -> SleeperCell:
     return cell
 
 
-def solve_track_wheels(track, train, support, wheel, profile=smooth_rail,
-                       harmonics="auto", *, accuracy: float | None = None,
-                       tol: float = 1e-9, strict: bool = False) -> WheelSolution:
-    """`railtrack.solve` with ``wheel=``: see `railtrack.solve` and the module docstring."""
+def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmonics="auto",
+                       method: str = "newton", *, accuracy=None, tol=None,
+                       max_iterations=None, split=None, samples=None, initial=None,
+                       strict: bool = False, check_foundation: bool = True, fallback=None,
+                       stability: str = "quick") -> WheelSolution:
+    """`railtrack.solve` with ``wheel=``: see `railtrack.solve` and the module docstring.
+
+    Checked by `railtrack.solvers.guards` as the other paths are: the laws at
+    rest, tol and accuracy, the arguments this path does not use (method
+    other than "newton", initial, split, fallback: refused).  An explicit m
+    gets the truncation estimate of `railtrack.solvers.wheel_truncation` and
+    a `TruncationWarning` above 1 %.  The quick stability look is not done
+    for wheels (their Floquet multipliers are not computed), and
+    ``stability="full"`` is refused: run `railtrack.simulate_time_domain`
+    with ``wheel=`` from this state instead.
+    """
+    if not isinstance(wheel, Wheel):
+        raise TypeError(f"wheel must be a railtrack.Wheel, e.g. Wheel({wheel!r}) for an unsprung "
+                        f"mass of {wheel!r} kg; got {type(wheel).__name__} {wheel!r}")
+    if method != "newton":
+        raise ValueError(f"with wheels, solve uses method='newton' only; got {method!r}")
+    refuse_unused("the wheel path", initial=(initial, "it starts from the static contact"),
+                  split=(split, "a fixed-point setting"),
+                  fallback=(fallback, "no speed path with wheels"))
+    if checked_stability(stability) == "full":
+        raise ValueError("stability='full' is not available with wheels (their Floquet "
+                         "multipliers are not computed): start railtrack.simulate_time_domain("
+                         "..., wheel=...) from this state and watch whether it stays")
     if wheel.primary_stiffness or wheel.primary_damping:
         raise ValueError("the harmonic balance takes an infinitely soft primary suspension "
                          "(the wheel carries its static load Q whatever it does); a primary "
@@ -90,55 +132,35 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail,
     passage = Passage(track, train)
     profile = smooth_rail if profile is None else profile
     cell = wheel_cell(passage, support, profile)
+    check_laws_at_rest(cell.foundations, cell.pad_stiffness, cell.pad_damping, check_foundation)
+    tol = checked_tol(tol, DEFAULT_WHEEL_TOL)
+    iterations = DEFAULT_STEPS if max_iterations is None else require_count(
+        "max_iterations", max_iterations, 0)
     groups = int(round(float(passage.wagon_length) / (cell.sleepers * passage.sleeper_spacing)))
-    scale = float(np.max(passage.axle_loads))
-    if isinstance(harmonics, str):
-        if harmonics != "auto":
-            raise ValueError(f'harmonics must be an integer >= 1 or "auto"; got {harmonics!r}')
-        accuracy = DEFAULT_ACCURACY if accuracy is None else float(accuracy)
-        result = _auto(passage, cell, wheel, profile, groups, accuracy, tol, scale)
-        limit = accuracy
+    automatic = isinstance(harmonics, str) and harmonics == "auto"
+    accuracy = checked_accuracy(accuracy, automatic, stacklevel=4)
+    if isinstance(harmonics, str) and not automatic:
+        raise ValueError(f'harmonics must be an integer >= 1 or "auto"; got {harmonics!r}')
+    if automatic:
+        if samples is not None:
+            raise ValueError("samples needs an explicit harmonics=m; 'auto' chooses m itself")
+        result = auto_wheels(passage, cell, wheel, profile, groups, accuracy, tol, iterations)
+        text = (f"harmonics='auto' stopped at m = {result.harmonics}: the contact force changed "
+                f"by {result.truncation_error:.1%} of Q at the last refinement")
     else:
-        if isinstance(harmonics, bool) or int(harmonics) != harmonics or harmonics < groups:
+        if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) \
+                or harmonics < groups:
             raise ValueError(f"harmonics must be an integer >= H/(N L) = {groups} (the first "
                              f"harmonic the wheels feel); got {harmonics!r}")
-        result = _wrap(passage, wheel, profile, solve_wheels(passage, cell, wheel, profile,
-                                                             int(harmonics), tol=tol))
-        limit = np.inf
-    return report(result, strict, limit,
-                  f"harmonics={result.harmonics}: the contact force changed by "
-                  f"{result.truncation_error:.1%} of Q at the last refinement")
-
-
-RAIL_FIELD_NOTE = (
-    "with wheels the rail between the sleepers also carries the wheels' varying forces, which "
-    "this field leaves out: ask the WheelSolution (its rail_displacement and "
-    "rail_bending_moment add them); the rail above the sleepers, the sleepers, their "
-    "rail-seat loads and foundation forces are complete here")
-
-
-def _wrap(passage, wheel, profile, raw) -> WheelSolution:
-    rail_top = profile_harmonics(passage, profile, raw.grid, raw.sleepers.samples)
-    sleepers = replace(raw.sleepers, rail_field_note=RAIL_FIELD_NOTE)
-    return WheelSolution(passage, wheel, profile, raw.sleepers.harmonics, raw.grid,
-                         raw.contact_harmonics, raw.compression_harmonics, raw.lift, rail_top,
-                         sleepers, raw.converged, raw.residual, raw.iterations, raw.message)
-
-
-def _auto(passage, cell, wheel, profile, groups, accuracy, tol, scale) -> WheelSolution:
-    m = max(4 * groups, 60)
-    t = np.linspace(0.0, float(passage.period), 4096, endpoint=False)
-    previous, change = None, float("nan")
-    while True:
-        result = _wrap(passage, wheel, profile, solve_wheels(passage, cell, wheel, profile, m,
-                                                             tol=tol))
-        if not result.converged:
-            return replace(result, truncation_error=change)
-        force = result.contact_force(t)
-        if previous is not None:
-            change = float(np.max(np.abs(force - previous))) / scale
-            if change <= accuracy:
-                return replace(result, truncation_error=change)
-        if m >= MAX_HARMONICS:
-            return replace(result, truncation_error=change)
-        previous, m = force, min(int(np.ceil(1.5 * m / groups)) * groups, MAX_HARMONICS)
+        if samples is not None:
+            samples = require_count("samples", samples, 4 * int(harmonics) + 1)
+        result = wrap(passage, wheel, profile, solve_wheels(
+            passage, cell, wheel, profile, int(harmonics), samples=samples, tol=tol,
+            max_iterations=iterations))
+        if result.converged:
+            result = replace(result, truncation_error=wheel_truncation(result))
+        text = (f"harmonics={result.harmonics}: the estimated truncation error of the contact "
+                f"force is {result.truncation_error:.1%} of Q; pass a larger harmonics")
+    budget_spent = max_iterations is not None and result.iterations >= iterations
+    return report(result, strict, truncation_limit(automatic, accuracy), text,
+                  quiet=budget_spent)

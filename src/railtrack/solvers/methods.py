@@ -1,0 +1,56 @@
+"""How `railtrack.solve` runs one of its methods for one sleeper: the fixed point's split.
+
+`run_method` resolves N0 of eq. (21) for the system's m (None: m; "auto":
+the smallest largest contraction factor) and runs the method.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+from .arguments import require_count
+from .fixed_point import automatic_split, contraction_factors
+from .newton import linear_guess
+
+__all__ = ["run_method", "check_method_arguments"]
+
+
+def check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split):
+    """Warn about the arguments `method` does not use; refuse samples/initial with "auto"."""
+    if method == "analytic":
+        ignored = [n for n, v in (("tol", tol), ("max_iterations", max_iterations),
+                                  ("initial", initial)) if v is not None]
+        if ignored:
+            warnings.warn(f"{', '.join(ignored)} not used by method='analytic' (eq. 23 is exact)",
+                          stacklevel=3)
+    if automatic and (samples is not None or initial is not None):
+        raise ValueError("samples and initial need an explicit harmonics=m; "
+                         "'auto' chooses m itself")
+    if method != "fixed-point" and split is not None:
+        warnings.warn(f"split is used by method='fixed-point' only; ignored by {method!r}",
+                      stacklevel=3)
+    if split is not None and split != "auto":
+        require_count("split (N0)", split, 0)
+
+
+def run_method(methods, method, system, tol, max_iterations, split, initial):
+    """Resolve the split for this m, run the method; (outcome, split used, note on the split)."""
+    note, used = "", None
+    if method == "fixed-point":
+        if split is None:
+            used = system.harmonics
+        elif split == "auto":
+            # Factors about Newton's starting guess, not the law at rest: for a
+            # hardening law under a heavy load the two differ by orders.
+            start = linear_guess(system) if initial is None else initial
+            used = automatic_split(system, start)
+            worst = float(contraction_factors(system, used, start).max())
+            if worst >= 1:
+                note = (f"no split N0 in 0..{system.harmonics} makes every contraction factor "
+                        f"of eq. (21) < 1 (the best, N0 = {used}, has {worst:.3g})")
+        elif split > system.harmonics:
+            raise ValueError(f"split (N0) must be 'auto' or an integer in "
+                             f"0..{system.harmonics}; got {split!r}")
+        else:
+            used = int(split)
+    return methods[method](system, tol, max_iterations, used, initial), used, note
