@@ -313,3 +313,24 @@ def test_the_derivative_of_hills_matrix_is_its_slope():
     scale = np.abs(real).max()
     assert np.abs(real - imaginary).max() < 1e-6 * scale
     assert np.abs(slope - real).max() < 1e-6 * scale
+
+
+def test_the_rails_pinned_pinned_mode_is_neutral_not_unstable():
+    # From m = 61 on (420 m/s) the cell's Hill matrix carries the rail's
+    # pinned-pinned mode: nodes at every sleeper, so no pad damps it and
+    # |mu| = 1.  Its frequency in the fixed frame is the closed form
+    # (pi / L)^2 sqrt(EI / rho S); it must not make the state "unstable".
+    train = rt.Train.paper(speed=420.0)
+    cell = rt.SleeperCell.identical(rt.Passage(FOLD_TRACK, train), FOLD_LAW, 3)
+    solution = rt.solve(FOLD_TRACK, train, cell, 85, stability="off")
+    result = rt.floquet(solution)
+    assert abs(abs(result.dominant) - 1.0) < 1e-8
+    track = FOLD_TRACK
+    pinned = (np.pi / track.sleeper_spacing) ** 2 * np.sqrt(
+        track.rail_bending_stiffness / track.rail_linear_mass
+    )
+    omega = 2 * np.pi * train.speed / train.wagon_length
+    imag = abs(result.exponents[np.argmax(np.abs(result.multipliers))].imag)
+    k = np.round((pinned - imag) / omega), np.round((pinned + imag) / omega)
+    assert min(abs(pinned - imag - k[0] * omega), abs(pinned + imag - k[1] * omega)) < 1e-3
+    assert result.verdict == "stable" and "neutral" in result.message

@@ -41,7 +41,8 @@ from ..equations.aft_jacobian import tangent_harmonics
 from ..equations.harmonic_balance import harmonic_system
 from ..equations.hill import bloch_phases, hill_derivative, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
-from .floquet_verdict import MIN_POINTS, Floquet, growth_bound, search_verdict
+from .floquet_verdict import (MIN_POINTS, NEUTRAL, Floquet, growth_bound, neutral_note,
+                              search_verdict)
 from .solution import Solution
 
 __all__ = ["Floquet", "floquet", "TAIL_LIMIT"]
@@ -268,7 +269,7 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     bases_of = np.array([found[i][3] for i in order])
     worst = float(bases_of[resolved][0]) if resolved.any() else float(bases[0])
     # the bound matters only where it could turn a "stable" into "unknown"
-    bound = growth_bound(solution) if abs(dominant) < 1 and shifts else float("nan")
+    bound = growth_bound(solution) if abs(dominant) <= 1 + NEUTRAL and shifts else float("nan")
     verdict, gaps = search_verdict(dominant, max_multiplier=max_multiplier, bound=bound,
                                    points=int(points), shifts=shifts)
     message = (f"{verdict}: largest multiplier |mu| = "
@@ -276,6 +277,7 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
                + (f", frequency {frequency:.3g} v/H" if kind == "complex" else "")
                + f") at Bloch phase {theta_dominant:.3g} rad per sleeper; {int(resolved.sum())} "
                f"resolved multipliers with |mu| >= {min_multiplier:g} over {bases.size} x {sleepers} phases, m = {m}"
+               + neutral_note(dominant)
                + (f"; none outside the unit circle, but {gaps}" if gaps else ""))
     return Floquet(multipliers, z / period, phases, tail, resolved, dominant, verdict == "stable",
                    kind, frequency, theta_dominant, bases, worst, period, m, message, verdict,

@@ -55,12 +55,18 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-__all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "BOUND_MARGIN", "growth_bound", "search_verdict",
+__all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "NEUTRAL", "BOUND_MARGIN", "growth_bound", "search_verdict",
            "with_verdict"]
 
 VERDICTS = ("stable", "unstable", "unknown")
 MIN_POINTS = 16
 """Fewest contour points per phase for which a search that finds nothing outside proves stability."""
+NEUTRAL = 1e-8
+"""A multiplier within this of |mu| = 1 is neutral, not unstable: an undamped mode that
+neither grows nor dies.  The rail's pinned-pinned modes are such (nodes at every sleeper,
+so no pad damps them; the rail has no damping of its own): a cell's Hill matrix carries
+them from m = omega_pp / Omega up (on the fold track at 420 m/s, m = 61, where
+|mu| - 1 = 3e-14), while one sleeper's condensed matrix cannot see them."""
 BOUND_MARGIN = 2.0
 """The box must reach this many times above the a-priori estimate of |mu| (`growth_bound`) [-]."""
 BOUND_SAMPLES = 4096
@@ -214,12 +220,22 @@ def _least_increments(stiffness: np.ndarray, damping: np.ndarray, mass: float,
 def with_verdict(result: Floquet, solution, *, max_multiplier: float, points: int,
                  shifts: bool) -> Floquet:
     """`result` with its verdict judged by `search_verdict` (the bound computed where it counts)."""
-    bound = growth_bound(solution) if abs(result.dominant) < 1 and shifts else float("nan")
+    bound = (growth_bound(solution) if abs(result.dominant) <= 1 + NEUTRAL and shifts
+             else float("nan"))
     verdict, gaps = search_verdict(result.dominant, max_multiplier=max_multiplier, bound=bound,
                                    points=int(points), shifts=shifts)
     words = result.message.split(":", 1)[-1]
-    message = f"{verdict}:{words}" + (f"; none outside the unit circle, but {gaps}" if gaps else "")
+    message = (f"{verdict}:{words}" + neutral_note(result.dominant)
+               + (f"; none outside the unit circle, but {gaps}" if gaps else ""))
     return replace(result, verdict=verdict, bound=bound, message=message)
+
+
+def neutral_note(dominant: complex) -> str:
+    """A note for a neutral dominant multiplier (`NEUTRAL`), else ""."""
+    if dominant != 0 and abs(abs(dominant) - 1.0) <= NEUTRAL:
+        return ("; the largest multiplier is neutral (|mu| = 1 to within 1e-8: an undamped "
+                "mode, such as the rail's pinned-pinned mode, neither grows nor dies)")
+    return ""
 
 
 def search_verdict(dominant: complex, *, max_multiplier: float, bound: float, points: int,
@@ -253,7 +269,7 @@ def search_verdict(dominant: complex, *, max_multiplier: float, bound: float, po
     >>> search_verdict(2.0, max_multiplier=1.04, bound=4.6, points=1, shifts=False)[0]
     'unstable'
     """
-    if abs(dominant) >= 1.0:
+    if abs(dominant) > 1.0 + NEUTRAL:
         return "unstable", ""
     gaps = []
     if not max_multiplier >= BOUND_MARGIN * bound:
