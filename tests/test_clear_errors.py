@@ -230,3 +230,15 @@ def test_the_ballast_reduction_names_a_bad_layer(index, bad):
     values[index] = bad
     with pytest.raises((TypeError, ValueError), match=rf"{names[index]} must be"):
         single_layer(*values)
+
+
+def test_check_stability_refuses_a_cell_and_names_the_alternatives():
+    # the ring of check_stability starts from one sleeper's solution: a
+    # CellSolution has no .train and once raised a bare AttributeError
+    track, train = rt.Track.paper(), rt.Train.paper()
+    cell = rt.SleeperCell.identical(
+        rt.Passage(track, train), rt.LinearFoundation.paper(), 2
+    )
+    solution = rt.solve(track, train, cell, 15)
+    with pytest.raises(TypeError, match="rt.floquet"):
+        rt.check_stability(solution)

@@ -224,6 +224,12 @@ def check_stability(solution, periods: int = 20, tol: float = 1e-2, elements_per
     require_non_negative("kick", kick)
     if not kick < tol:
         raise ValueError(f"kick must be a finite number in [0, tol = {tol:g}); got {kick!r}")
+    if hasattr(solution, "cell") or hasattr(solution, "wheel"):
+        kind = "SleeperCell" if hasattr(solution, "cell") else "wheel"
+        raise TypeError(f"check_stability starts the ring on one sleeper's solution; a {kind} "
+                        "solution is judged by rt.floquet(solution) (Hill's matrix; cells only) "
+                        "or rt.ring_multipliers(solution) (cells), and a wheel solution by "
+                        "rt.simulate_time_domain(..., wheel=...)")
     if not getattr(solution, "converged", False):
         # An unconverged iterate is no periodic solution: the ring would leave
         # it whatever its stability, and the verdict would say "leaves".
