@@ -123,3 +123,29 @@ def test_far_positions_within_the_bound_repeat_the_rail_wagons_behind(cell):
     np.testing.assert_allclose(cell.rail_displacement(t, x + ahead),
                                cell.rail_displacement(t - ahead / PAPER.speed, x),
                                rtol=0, atol=1e-3 * np.abs(cell.rail_displacement(t, x)).max())
+
+
+def test_times_without_digits_or_not_numbers_are_refused():
+    # t = 1e18 s leaves the phases omega t no digits and NaN is no time: the
+    # histories of one sleeper, a cell and the wheels refuse both, as x is;
+    # a time one million periods on is still the same response
+    track, train = rt.Track.paper(), rt.Train.paper()
+    law = rt.LinearFoundation.paper()
+    plain = rt.solve(track, train, law, 15)
+    cell = rt.solve(
+        track, train, rt.SleeperCell.identical(rt.Passage(track, train), law, 2)
+    )
+    for history in (
+        plain.sleeper_displacement,
+        cell.sleeper_displacement,
+        lambda t: cell.rail_displacement(t, 0.3),
+        lambda t: plain.rail_displacement(t, 0.3),
+    ):
+        for bad in (1e18, float("nan"), float("inf")):
+            with pytest.raises(ValueError, match="times t|too late"):
+                history(np.array([0.0, bad]))
+    period = float(plain.period)
+    later = plain.sleeper_displacement(1e6 * period + 0.1 * period)
+    now = plain.sleeper_displacement(0.1 * period)
+    peak = np.abs(plain.sleeper_displacement(np.linspace(0, period, 64))).max()
+    assert abs(later - now) < 1e-6 * peak

@@ -3,7 +3,8 @@
 The rail's coefficients at x carry the phase e^{-i omega_n x / v} of each
 harmonic; far from the observed sleeper round-off leaves that phase no
 digits.  `check_positions` refuses such x (`railtrack.equations.rail_field`,
-`railtrack.equations.moment`).
+`railtrack.equations.moment`); `checked_times` does the same for the
+phases omega_n t of a time t, and for a t that is not a number.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from numpy.typing import ArrayLike
 
 from ..model.passage import Passage
 
-__all__ = ["MAX_PHASE_ROUNDOFF", "check_positions"]
+__all__ = ["MAX_PHASE_ROUNDOFF", "check_positions", "checked_times"]
 
 MAX_PHASE_ROUNDOFF = 1e-3
 """Largest round-off of the highest harmonic's phase omega_m |x| / v accepted [rad].
@@ -55,3 +56,38 @@ def check_positions(passage: Passage, omega: ArrayLike, x: ArrayLike) -> None:
             f"{roundoff:.2g} rad, and the result would be round-off, not the rail "
             f"(MAX_PHASE_ROUNDOFF = {MAX_PHASE_ROUNDOFF:g} rad).  This solution accepts "
             f"|x| <= {bound:.3g} m.{hint}")
+
+
+def checked_times(omega: ArrayLike, t: ArrayLike) -> np.ndarray:
+    """t as a float array [s], refused where it is not finite or its phases have no digits.
+
+    Raises ValueError for a non-finite t, or where ``eps max|omega| max|t|``
+    exceeds `MAX_PHASE_ROUNDOFF`; the message gives the bound on |t|.  A
+    periodic response repeats every period: ask for t modulo it.
+
+    Examples
+    --------
+    >>> checked_times([0.0, 100.0], [0.0, 0.5]).tolist()
+    [0.0, 0.5]
+    >>> checked_times([100.0], [float("nan")])
+    Traceback (most recent call last):
+    ...
+    ValueError: times t must be finite numbers [s]; got nan
+    """
+    t = np.asarray(t, dtype=float)
+    if t.size == 0:
+        return t
+    if not np.all(np.isfinite(t)):
+        raise ValueError(f"times t must be finite numbers [s]; got {float(t[~np.isfinite(t)][0])!r}")
+    top = float(np.max(np.abs(np.asarray(omega, dtype=float)), initial=0.0))
+    late = float(np.max(np.abs(t)))
+    roundoff = np.finfo(float).eps * top * late
+    if roundoff > MAX_PHASE_ROUNDOFF:
+        bound = MAX_PHASE_ROUNDOFF / (np.finfo(float).eps * top)
+        raise ValueError(
+            f"|t| = {late:.3g} s is too late for double precision: the phase omega t of the "
+            f"highest harmonic carries a round-off of {roundoff:.2g} rad, and the result "
+            f"would be round-off (MAX_PHASE_ROUNDOFF = {MAX_PHASE_ROUNDOFF:g} rad).  "
+            f"|t| <= {bound:.3g} s is accepted; the response repeats every period, so ask "
+            "for t modulo it")
+    return t

@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike
 
 from ..equations.cell_rail_field import cell_rail_field_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
-from ..equations.positions import check_positions
+from ..equations.positions import check_positions, checked_times
 from ..model.passage import Passage
 from .cell_static import cell_at_rest
 from .field_chunks import CHUNK_ENTRIES, fourier_field
@@ -100,7 +100,7 @@ class CellSolution:
         return self.passage.fundamental_frequency * np.arange(-self.harmonics, self.harmonics + 1)
 
     def _series(self, coefficients: np.ndarray, t: ArrayLike) -> np.ndarray:
-        t = np.asarray(t, dtype=float)
+        t = checked_times(self.frequencies, t)
         phases = np.exp(1j * np.multiply.outer(t, self.frequencies))        # (..., 2m+1)
         return np.moveaxis((phases @ coefficients.T).real, -1, 0)
 
@@ -148,6 +148,7 @@ class CellSolution:
         weights = np.where(np.arange(m + 1) == 0, 1.0, 2.0)
         ei = self.passage.rail_bending_stiffness
         check_positions(self.passage, omega, x)
+        t = checked_times(omega, t)
 
         def coefficients_at(xs: np.ndarray) -> np.ndarray:
             (field,) = cell_rail_field_coefficients(

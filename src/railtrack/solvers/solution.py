@@ -14,6 +14,7 @@ from ..model.passage import Passage
 from ..equations.bowl import DeflectionBowl, deflection_bowl
 from ..equations.load import load_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
+from ..equations.positions import checked_times
 from .output_errors import output_truncation_errors
 
 __all__ = ["Solution", "ConvergenceError", "ConvergenceWarning", "TruncationWarning", "DeflectionBowl",
@@ -22,7 +23,7 @@ __all__ = ["Solution", "ConvergenceError", "ConvergenceWarning", "TruncationWarn
 
 def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) -> np.ndarray:
     """Real sum_n c_n exp(i omega_n t) over a two-sided set, eq. (12), for any shape of t."""
-    t = np.asarray(t, dtype=float)
+    t = checked_times(omega, t)
     phases = np.exp(1j * np.multiply.outer(t, omega))
     return (phases @ coefficients).real
 
@@ -258,7 +259,8 @@ class Solution:
 
     def _rail_field(self, t: ArrayLike, x: ArrayLike, which: int) -> np.ndarray:
         """Re sum_n r_n(x) e^{i omega_n t}: displacement (0), curvature less its kinks (1), curvature (2)."""
-        t, x = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(x, dtype=float))
+        t = checked_times(self.frequencies, t)
+        t, x = np.broadcast_arrays(t, np.asarray(x, dtype=float))
         xs, x_index = np.unique(x, return_inverse=True)
         ts, t_index = np.unique(t, return_inverse=True)
         omega = self.frequencies

@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..equations.moment import kink_sum
-from ..equations.positions import check_positions
+from ..equations.positions import check_positions, checked_times
 from ..equations.wheel_train_receptance import wheel_train_receptance
 from ..model.passage import Passage
 from .arguments import require_count
@@ -96,8 +96,8 @@ class WheelSolution:
         return float(self.passage.period)
 
     def _series(self, harmonics: np.ndarray, t: ArrayLike) -> np.ndarray:
-        t = np.asarray(t, dtype=float)
         omega = 2 * np.pi * self.grid / self.period
+        t = checked_times(omega, t)
         flat = t.ravel()
         out = np.empty((harmonics.shape[0], flat.size))
         step = chunk_length(omega.size)          # (times, lmax) blocks: bounded memory
@@ -181,7 +181,8 @@ class WheelSolution:
         at once, so that memory stays bounded and each harmonic's roots are
         found once per block.
         """
-        t, x = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(x, dtype=float))
+        t = checked_times(2 * np.pi * self.grid / self.period, t)
+        t, x = np.broadcast_arrays(t, np.asarray(x, dtype=float))
         flat_t, flat_x = t.ravel(), x.ravel()
         out = np.zeros(flat_t.size)
         omega = 2 * np.pi * self.grid / self.period
