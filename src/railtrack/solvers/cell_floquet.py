@@ -29,9 +29,8 @@ from ..equations.cell_hill import (cell_bloch_phases, cell_hill_derivative, cell
 from ..equations.harmonic_balance import default_samples
 from ..model.cell import SleeperCell
 from .contour import RANK_TOLERANCE, polish
-from .floquet_verdict import with_verdict
-from .floquet import (EDGE, MEMORY_BYTES, RESIDUAL_LIMIT, TAIL_LIMIT, Floquet, _base_phases,
-                      _distinct, _kind)
+from .floquet import (EDGE, MEMORY_BYTES, RESIDUAL_LIMIT, Floquet, _base_phases, _distinct,
+                      floquet_result)
 
 __all__ = ["cell_floquet", "uniform_cell", "travelling_wave", "cell_tangent"]
 
@@ -211,10 +210,9 @@ def cell_floquet(solution, theta=None, *, harmonics: int | None = None,
         found = [(z, phase, tail, _nearest(bases, phase, b)) for z, phase, tail, _ in found]
     else:
         found = _search(view, bases, int(m), min_multiplier, max_multiplier, points, shifts)
-    result = _result(_distinct(found), bases, b, m,
-                     float(passage.wagon_length / passage.speed), min_multiplier)
-    return with_verdict(result, solution, max_multiplier=max_multiplier, points=points,
-                        shifts=shifts)
+    return floquet_result(_distinct(found), bases, b, int(m),
+                          float(passage.wagon_length / passage.speed), min_multiplier, solution,
+                          max_multiplier=max_multiplier, points=points, shifts=shifts, per="cell")
 
 
 def _nearest(bases: np.ndarray, phase: float, b: int) -> float:
@@ -281,30 +279,3 @@ def _search(view, bases, m, min_multiplier, max_multiplier, points, shifts) -> l
         if mirrored[i] and 1e-12 < phase[i] < np.pi - 1e-12:
             found.append((np.conj(values[i]), 2 * np.pi - phase[i], tails[i], base[i]))
     return found
-
-
-def _result(found: list, bases: np.ndarray, b: int, m: int, period: float,
-            min_multiplier: float) -> Floquet:
-    """The `Floquet` of the exponents found, as `railtrack.floquet` reports them."""
-    z = np.array([f[0] for f in found], dtype=complex)
-    found_phases = np.array([f[1] for f in found])
-    order = np.lexsort((-z.imag, np.round(found_phases, 9), -np.round(z.real, 9)))
-    z = z[order]
-    phases = np.array([found[i][1] for i in order])
-    tail = np.array([found[i][2] for i in order])
-    resolved = tail <= TAIL_LIMIT
-    multipliers = np.exp(z)
-    dominant = complex(multipliers[resolved][0]) if resolved.any() else 0j
-    kind, frequency = _kind(dominant)
-    theta_dominant = float(phases[resolved][0]) if resolved.any() else float("nan")
-    bases_of = np.array([found[i][3] for i in order])
-    worst = float(bases_of[resolved][0]) if resolved.any() else float(bases[0])
-    stable = bool(abs(dominant) < 1.0)
-    message = (f"{'stable' if stable else 'unstable'}: largest multiplier |mu| = "
-               f"{abs(dominant):.4g} ({kind}"
-               + (f", frequency {frequency:.3g} v/H" if kind == "complex" else "")
-               + f") at Bloch phase {theta_dominant:.3g} rad per cell; {int(resolved.sum())} "
-               f"resolved multipliers with |mu| >= {min_multiplier:g} over {bases.size} x "
-               f"{b} phases per cell, m = {m}")
-    return Floquet(multipliers, z / period, phases, tail, resolved, dominant, stable, kind,
-                   frequency, theta_dominant, bases, worst, period, m, message)

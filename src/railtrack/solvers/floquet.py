@@ -45,7 +45,7 @@ from .floquet_verdict import (MIN_POINTS, NEUTRAL, Floquet, growth_bound, neutra
                               search_verdict)
 from .solution import Solution
 
-__all__ = ["Floquet", "floquet", "TAIL_LIMIT"]
+__all__ = ["Floquet", "floquet", "floquet_result", "TAIL_LIMIT"]
 
 TAIL_LIMIT = 0.05
 """Largest share of an eigenvector's norm on the top fifth of the harmonics for a resolved exponent."""
@@ -252,7 +252,19 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
             found.append((values[i], phase[i], tails[i], base[i]))
             if mirrored[i] and 1e-12 < phase[i] < np.pi - 1e-12:
                 found.append((np.conj(values[i]), 2 * np.pi - phase[i], tails[i], base[i]))
-    found = _distinct(found)
+    return floquet_result(_distinct(found), bases, sleepers, m, period, min_multiplier, solution,
+                          max_multiplier=max_multiplier, points=points, shifts=shifts)
+
+
+def floquet_result(found: list, bases: np.ndarray, count: int, m: int, period: float,
+                   min_multiplier: float, solution, *, max_multiplier: float, points: int,
+                   shifts: bool, per: str = "sleeper") -> Floquet:
+    """The `Floquet` of the exponents `found` (z = lambda T, phase, tail, base), judged.
+
+    Shared by one sleeper (`floquet`, phases per sleeper) and a cell
+    (`railtrack.solvers.cell_floquet`, ``per="cell"``): `count` phases of
+    the family per base phase.
+    """
     z = np.array([f[0] for f in found], dtype=complex)
     # By decreasing |mu|; a conjugate pair (equal |mu|) lists the member with the
     # smaller phase, then the one turning forward, first, whatever the round-off.
@@ -272,11 +284,12 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     bound = growth_bound(solution) if abs(dominant) <= 1 + NEUTRAL and shifts else float("nan")
     verdict, gaps = search_verdict(dominant, max_multiplier=max_multiplier, bound=bound,
                                    points=int(points), shifts=shifts)
+    family = f"{bases.size} x {count} phases" + (" per cell" if per == "cell" else "")
     message = (f"{verdict}: largest multiplier |mu| = "
                f"{abs(dominant):.4g} ({kind}"
                + (f", frequency {frequency:.3g} v/H" if kind == "complex" else "")
-               + f") at Bloch phase {theta_dominant:.3g} rad per sleeper; {int(resolved.sum())} "
-               f"resolved multipliers with |mu| >= {min_multiplier:g} over {bases.size} x {sleepers} phases, m = {m}"
+               + f") at Bloch phase {theta_dominant:.3g} rad per {per}; {int(resolved.sum())} "
+               f"resolved multipliers with |mu| >= {min_multiplier:g} over {family}, m = {m}"
                + neutral_note(dominant)
                + (f"; none outside the unit circle, but {gaps}" if gaps else ""))
     return Floquet(multipliers, z / period, phases, tail, resolved, dominant, verdict == "stable",

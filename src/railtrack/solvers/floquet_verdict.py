@@ -51,12 +51,11 @@ stays finite.  Several shifts are tried and the least kept.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "NEUTRAL", "BOUND_MARGIN", "growth_bound", "search_verdict",
-           "with_verdict"]
+__all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "NEUTRAL", "BOUND_MARGIN", "growth_bound", "search_verdict"]
 
 VERDICTS = ("stable", "unstable", "unknown")
 MIN_POINTS = 16
@@ -215,19 +214,6 @@ def _least_increments(stiffness: np.ndarray, damping: np.ndarray, mass: float,
         if steps.sum() < best:
             best, chosen = float(steps.sum()), steps
     return chosen
-
-
-def with_verdict(result: Floquet, solution, *, max_multiplier: float, points: int,
-                 shifts: bool) -> Floquet:
-    """`result` with its verdict judged by `search_verdict` (the bound computed where it counts)."""
-    bound = (growth_bound(solution) if abs(result.dominant) <= 1 + NEUTRAL and shifts
-             else float("nan"))
-    verdict, gaps = search_verdict(result.dominant, max_multiplier=max_multiplier, bound=bound,
-                                   points=int(points), shifts=shifts)
-    words = result.message.split(":", 1)[-1]
-    message = (f"{verdict}:{words}" + neutral_note(result.dominant)
-               + (f"; none outside the unit circle, but {gaps}" if gaps else ""))
-    return replace(result, verdict=verdict, bound=bound, message=message)
 
 
 def neutral_note(dominant: complex) -> str:
