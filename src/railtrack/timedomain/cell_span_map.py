@@ -13,13 +13,12 @@ its linearisation are those of `ring_span_map`.
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse.linalg as spla
 
 from ..model.passage import Passage
 from .fem import ring_mesh, sleepers_on_ring
 from .newmark import NewmarkStepper, evaluate_law
 from .ring_cell import ring_cell, ring_train
-from .span_map import RingSpanMap
+from .span_map import RingSpanMap, tangent_flow
 from .timestep import check_steps_per_period
 
 __all__ = ["cell_span_map"]
@@ -73,7 +72,6 @@ def cell_span_map(solution, *, wagons: int = 1, elements_per_span: int = 4,
     dt = span_time / per_span
     count = n * per_span
     stepper = NewmarkStepper(mesh, law, (k0, c0), dt, (None, None), 0.0, 0)
-    system, history, sleepers = stepper.system, stepper.history, mesh.sleeper_dofs
 
     # ring sleeper i is cell sleeper i mod N, delayed by (i div N) cell times
     index = np.arange(ring)
@@ -83,24 +81,6 @@ def cell_span_map(solution, *, wagons: int = 1, elements_per_span: int = 4,
     _, stiffness, damping = evaluate_law(law, w, rate)
     stiffness, damping = (np.broadcast_to(x, w.shape) for x in (stiffness, damping))
 
-    size = mesh.n_dofs
-    u = np.hstack([np.eye(size), np.zeros((size, size))])
-    v = np.hstack([np.zeros((size, size)), np.eye(size)])
-    force = -(mesh.stiffness @ u + mesh.damping @ v)
-    force[sleepers] -= stiffness[0][:, None] * u[sleepers] + damping[0][:, None] * v[sleepers]
-    a = spla.splu(mesh.mass.tocsc()).solve(force)
-    for step in range(1, count + 1):
-        extra = damping[step] - c0
-        rhs = history @ np.vstack([u, v, a])
-        rhs[sleepers] += extra[:, None] * ((2.0 / dt) * u[sleepers] + v[sleepers])
-        free = system.lu.solve(rhs)
-        change = stiffness[step] - k0 + (2.0 / dt) * extra
-        on_sleepers = np.linalg.solve(system.identity + system.influence * change[None, :],
-                                      free[sleepers])
-        u_next = free - system.response @ (change[:, None] * on_sleepers)
-        increment = u_next - u
-        a = (4.0 / dt**2) * increment - (4.0 / dt) * v - a
-        v = (2.0 / dt) * increment - v
-        u = u_next
+    u, v = tangent_flow(stepper, stiffness, damping, (k0, c0), dt)
     span = RingSpanMap(np.vstack([u, v]), mesh, int(wagons), per_span, dt)
     return RingSpanMap(span.shift(span.matrix, -n), mesh, int(wagons), per_span, dt)

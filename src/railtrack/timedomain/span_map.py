@@ -149,7 +149,6 @@ def ring_span_map(solution, *, wagons: int = 1, elements_per_span: int = 4,
     dt = span_time / steps
     k0, c0 = reference_law(foundation)
     stepper = NewmarkStepper(mesh, foundation, (k0, c0), dt, (None, None), 0.0, 0)
-    system, history, sleepers = stepper.system, stepper.history, mesh.sleeper_dofs
 
     # Tangent of the law at every step end along the travelling wave [N/m], [N s/m].
     times = dt * np.arange(steps + 1)[:, None] - span_time * np.arange(mesh.n_sleepers)[None, :]
@@ -157,13 +156,28 @@ def ring_span_map(solution, *, wagons: int = 1, elements_per_span: int = 4,
     _, stiffness, damping = evaluate_law(foundation, w.ravel(), rate.ravel())
     stiffness, damping = (np.broadcast_to(x, w.size).reshape(w.shape) for x in (stiffness, damping))
 
-    n = mesh.n_dofs
-    u = np.hstack([np.eye(n), np.zeros((n, n))])
-    v = np.hstack([np.zeros((n, n)), np.eye(n)])
+    u, v = tangent_flow(stepper, stiffness, damping, (k0, c0), dt)
+    span = RingSpanMap(np.vstack([u, v]), mesh, int(wagons), steps, dt)
+    return RingSpanMap(span.shift(span.matrix, -1), mesh, int(wagons), steps, dt)
+
+
+def tangent_flow(stepper, stiffness: np.ndarray, damping: np.ndarray, reference, dt: float):
+    """Unit disturbances carried by Newmark through the tangent law along the orbit.
+
+    `stiffness`, `damping` : (steps + 1, sleepers) tangent of the law at every
+    step end [N/m], [N s/m]; `reference` the (k0, c0) the stepper's matrices
+    hold.  Starts from the identity in (u, v) and returns (u, v) after the
+    steps, each (dofs, 2 dofs): the columns of the map over those steps.
+    """
+    mesh, system, history = stepper.mesh, stepper.system, stepper.history
+    sleepers, (k0, c0) = mesh.sleeper_dofs, reference
+    size = mesh.n_dofs
+    u = np.hstack([np.eye(size), np.zeros((size, size))])
+    v = np.hstack([np.zeros((size, size)), np.eye(size)])
     force = -(mesh.stiffness @ u + mesh.damping @ v)     # M u'' = -C_0 u' - K_0 u at t = 0
     force[sleepers] -= stiffness[0][:, None] * u[sleepers] + damping[0][:, None] * v[sleepers]
     a = spla.splu(mesh.mass.tocsc()).solve(force)
-    for step in range(1, steps + 1):
+    for step in range(1, stiffness.shape[0]):
         extra = damping[step] - c0
         rhs = history @ np.vstack([u, v, a])
         rhs[sleepers] += extra[:, None] * ((2.0 / dt) * u[sleepers] + v[sleepers])
@@ -176,5 +190,4 @@ def ring_span_map(solution, *, wagons: int = 1, elements_per_span: int = 4,
         a = (4.0 / dt**2) * increment - (4.0 / dt) * v - a
         v = (2.0 / dt) * increment - v
         u = u_next
-    span = RingSpanMap(np.vstack([u, v]), mesh, int(wagons), steps, dt)
-    return RingSpanMap(span.shift(span.matrix, -1), mesh, int(wagons), steps, dt)
+    return u, v
