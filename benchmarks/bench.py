@@ -1,7 +1,9 @@
 """Speed and iteration counts of the railtrack solvers on the paper's cases.
 
 Run with ``make bench`` (all sections), or ``python benchmarks/bench.py
-stability`` for some of them (``solvers``, ``sweep``, ``stability``, ``cells``).
+stability`` for some of them (``targets``, ``solvers``, ``sweep``, ``stability``,
+``cells``, ``wheels``).  ``targets`` (benchmarks/targets.py) is issue 28's table:
+each target timed beside its reference in one run.
 Prints Markdown tables: the machine, the median wall time of each solve
 (median over several runs, each run timing a batch of repeated solves), and
 the iterations each method needs to reach a relative residual of 1e-10 of
@@ -24,6 +26,7 @@ import numpy as np
 import scipy
 
 import railtrack as rt
+from targets import print_targets   # benchmarks/targets.py, beside this file
 
 HARMONICS = 15
 CASES = {
@@ -287,7 +290,8 @@ def _timed(function) -> float:
     return time.perf_counter() - start
 
 
-SECTIONS = {"solvers": main, "sweep": bench_sweep, "stability": bench_stability,
+SECTIONS = {"targets": print_targets, "solvers": main, "sweep": bench_sweep,
+            "stability": bench_stability,
             "cells": bench_cells, "wheels": bench_wheels}
 
 
