@@ -198,7 +198,8 @@ def linear_draws(passage, cell, law, factors: np.ndarray, harmonics, *, accuracy
     automatic = isinstance(harmonics, str)
     draws = len(factors)
     if automatic:
-        m = solve_cell_auto(passage, cell, accuracy=accuracy).harmonics
+        with blas_threads(1):
+            m = solve_cell_auto(passage, cell, accuracy=accuracy).harmonics
     else:
         m = int(harmonics)
     stiffness = law.stiffness * factors
@@ -208,8 +209,9 @@ def linear_draws(passage, cell, law, factors: np.ndarray, harmonics, *, accuracy
            "moment": np.full(draws, np.nan)}
     pending, rounds = np.arange(draws), 0
     while pending.size:
-        samples = auto_samples(m) if automatic else default_samples(m)
-        level = build_level(passage, cell, m, samples, accuracy)
+        with blas_threads(1):     # the operators too: stacks of small matrix products
+            level = build_level(passage, cell, m, auto_samples(m) if automatic
+                                else default_samples(m), accuracy)
         bounds = chunk_bounds(pending.size, DRAW_CHUNK)
         arguments = []
         for start, stop in bounds:
