@@ -37,6 +37,8 @@ __all__ = ["CellBatch", "linear_cells", "batch_state", "linearised_law", "batch_
 
 TAIL_ENTRIES = 2_000_000
 """Matrix entries per stacked solve of the tail (32 MB of complex numbers)."""
+SHARE_ENTRIES = 1 << 18
+"""Samples per group of cells whose tail is measured together (4 MB)."""
 
 
 class CellBatch(NamedTuple):
@@ -118,15 +120,24 @@ def batch_state(law, sleeper_mass: np.ndarray, coefficients: np.ndarray, ops: Ce
 
 
 def _tail_shares(kept: np.ndarray, tail: np.ndarray, samples: int) -> np.ndarray:
-    """`railtrack.solvers.cell_auto._tail_share` of each cell, (D,)."""
+    """`railtrack.solvers.cell_auto._tail_share` of each cell, (D,).
+
+    A few cells at a time: their grids of samples stay in cache between the
+    two transforms (the whole batch's would be written out and read back).
+    """
     m = kept.shape[-1] - 1
-    grid = np.zeros(kept.shape[:-1] + (samples // 2 + 1,), dtype=complex)
-    grid[..., m + 1:m + 1 + tail.shape[-1]] = tail * samples
-    error = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)), axis=(1, 2))
-    grid[..., :m + 1] = kept * samples
-    peak = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)), axis=(1, 2))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(peak > 0, error / peak, np.inf)
+    cells = max(1, SHARE_ENTRIES // (kept.shape[1] * samples))
+    out = np.empty(kept.shape[0])
+    for start in range(0, kept.shape[0], cells):
+        part = slice(start, start + cells)
+        grid = np.zeros(kept[part].shape[:-1] + (samples // 2 + 1,), dtype=complex)
+        grid[..., m + 1:m + 1 + tail.shape[-1]] = tail[part] * samples
+        error = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)), axis=(1, 2))
+        grid[..., :m + 1] = kept[part] * samples
+        peak = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)), axis=(1, 2))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out[part] = np.where(peak > 0, error / peak, np.inf)
+    return out
 
 
 def linearised_law(law, coefficients: np.ndarray, omega: np.ndarray, samples: int):
