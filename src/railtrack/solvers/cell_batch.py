@@ -75,11 +75,17 @@ def linear_cells(ops: CellOperators, sleeper_mass: np.ndarray, stiffness: np.nda
     s = 1j * ops.omega[None, :, None]
     support = (sleeper_mass * s**2 + stiffness[:, None, :]
                + s * damping[:, None, :])                                       # (D, W, N)
-    blocks = ops.first + ops.second * support[:, :, None, :]
+    blocks = ops.second * support[:, :, None, :]
+    blocks += ops.first
     right = np.broadcast_to(ops.load[..., None], blocks.shape[:-1] + (1,))
     c = np.linalg.solve(blocks, right)[..., 0]
     c[:, 0] = c[:, 0].real
     return np.swapaxes(c, 1, 2)
+
+
+def _apply(matrices: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """``matrices[n] @ values[d, :, n]`` for every cell d and harmonic n: (D, W, N)."""
+    return (matrices @ np.swapaxes(values, 1, 2)[..., None])[..., 0]
 
 
 def _aft(law, coefficients: np.ndarray, omega: np.ndarray, samples: int):
@@ -109,8 +115,7 @@ def batch_state(law, sleeper_mass: np.ndarray, coefficients: np.ndarray, ops: Ce
         force = np.fft.rfft(np.broadcast_to(law.force(w, v), w.shape), axis=-1)[..., :m + 1]
         force = force / samples
         p = -sleeper_mass[:, None] * ops.omega**2 * coefficients + force
-        res = (np.einsum("nab,dbn->dna", ops.first, coefficients)
-               + np.einsum("nab,dbn->dna", ops.second, p) - ops.load)
+        res = (_apply(ops.first, coefficients) + _apply(ops.second, p)) - ops.load
         scale = _two_sided_norms(ops.load[None])[0]
         residual = _two_sided_norms(res) / scale
     residual = np.where(np.isfinite(residual), residual, np.inf)
@@ -194,12 +199,12 @@ def batch_truncation(sleeper_mass: np.ndarray, batch: CellBatch, tail_ops: CellO
             h = high[part]
             support = (-sleeper_mass * h[:, None] ** 2 + stiffness[:, None, :]
                        + 1j * h[:, None] * damping[:, None, :])                  # (D, W, N)
-            blocks = tail_ops.first[part] + tail_ops.second[part] * support[:, :, None, :]
+            blocks = tail_ops.second[part] * support[:, :, None, :]
+            blocks += tail_ops.first[part]
             if excess is None:
                 rhs = np.broadcast_to(tail_ops.load[part], blocks.shape[:-1])
             else:
-                rhs = tail_ops.load[part] - np.einsum("nab,dbn->dna", tail_ops.second[part],
-                                                      excess[..., part])
+                rhs = tail_ops.load[part] - _apply(tail_ops.second[part], excess[..., part])
             solved = np.linalg.solve(blocks, rhs[..., None])[..., 0]            # (D, W, N)
             tail[..., part] = np.swapaxes(solved, 1, 2)
             seat_tail[..., part] = np.swapaxes(support, 1, 2) * tail[..., part]

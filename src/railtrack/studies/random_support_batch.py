@@ -155,7 +155,9 @@ def solve_chunk(level: Level, law, stiffness: np.ndarray, damping: np.ndarray) -
                                         0.8 * level.accuracy)
     gain, offset = level.moments
     # the seat harmonics as `CellSolution.rail_bending_moment` passes them to the rail
-    moment = np.einsum("iknj,djn->dik", gain, batch.seat).real + offset
+    x, k = offset.shape
+    moment = (np.swapaxes(batch.seat, 1, 2).reshape(len(c), -1)
+              @ gain.reshape(x * k, -1).T).real.reshape(len(c), x, k) + offset
     seat = _seat_peaks(batch.seat)
     nan = np.full(len(c), np.nan)
     return {"converged": converged, "residual": batch.residual, "error": error,
