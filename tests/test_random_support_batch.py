@@ -126,3 +126,18 @@ def test_blas_threads_limits_inside_and_restores_after():
     with blas_threads(1):
         assert all(n == 1 for n in _blas_threads())
     assert _blas_threads() == before
+
+
+def test_a_sweep_gives_the_same_members_on_an_executor_and_in_blocks(monkeypatch):
+    import railtrack.studies.sweep as sweep_module
+
+    law = rt.CubicFoundation.paper()
+    speeds = np.linspace(30.0, 90.0, 7)
+    serial = rt.sweep(TRACK, rt.Train.paper(), law, 15, speed=speeds, stability="off")
+    monkeypatch.setattr(sweep_module, "BLOCK", 3)          # three blocks
+    with ThreadPoolExecutor(max_workers=2) as executor:
+        spread = rt.sweep(TRACK, rt.Train.paper(), law, 15, speed=speeds,
+                          stability="off", executor=executor)
+    np.testing.assert_allclose(spread.coefficients, serial.coefficients, rtol=1e-12,
+                               atol=1e-12 * np.abs(serial.coefficients).max())
+    np.testing.assert_array_equal(spread.converged, serial.converged)

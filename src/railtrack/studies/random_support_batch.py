@@ -138,7 +138,7 @@ def solve_chunk(level: Level, law, stiffness: np.ndarray, damping: np.ndarray) -
         ``grown`` (the m a draw missing ``level.accuracy`` needs, else 0),
         ``seat`` and ``moment`` (NaN where not converged).
     """
-    passage, cell, m = level.passage, level.cell, level.harmonics
+    passage, cell = level.passage, level.cell
     mass = cell.sleeper_mass
     with blas_threads(1):
         c = linear_cells(level.ops, mass, stiffness, damping)
