@@ -141,3 +141,23 @@ def test_a_sweep_gives_the_same_members_on_an_executor_and_in_blocks(monkeypatch
     np.testing.assert_allclose(spread.coefficients, serial.coefficients, rtol=1e-12,
                                atol=1e-12 * np.abs(serial.coefficients).max())
     np.testing.assert_array_equal(spread.converged, serial.converged)
+
+
+def test_any_object_with_submit_runs_the_chunks_in_order():
+    # a Dask Client's futures are not concurrent.futures ones: only
+    # submit(...).result() is used, and the results keep the chunks' order
+    from railtrack.solvers.chunk_map import map_chunks
+
+    class Later:
+        def __init__(self, value):
+            self.value = value
+
+        def result(self):
+            return self.value
+
+    class Client:
+        def submit(self, function, *args):
+            return Later(function(*args))
+
+    assert map_chunks(pow, [(2, k) for k in range(5)], [1] * 5,
+                      executor=Client()) == [1, 2, 4, 8, 16]
