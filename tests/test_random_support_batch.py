@@ -161,3 +161,16 @@ def test_any_object_with_submit_runs_the_chunks_in_order():
 
     assert map_chunks(pow, [(2, k) for k in range(5)], [1] * 5,
                       executor=Client()) == [1, 2, 4, 8, 16]
+
+
+def test_the_seat_peak_of_many_harmonics_is_the_same_sum():
+    # from m = 256 the 512 instants alias an FFT: the peak is then summed
+    # directly; with the harmonics above 254 zero both ways must agree
+    from railtrack.studies.random_support_batch import _seat_peaks
+
+    rng = np.random.default_rng(3)
+    seat = np.zeros((2, 3, 301), dtype=complex)
+    seat[..., :255] = rng.normal(size=(2, 3, 255)) + 1j * rng.normal(size=(2, 3, 255))
+    seat[..., 0] = seat[..., 0].real
+    np.testing.assert_allclose(_seat_peaks(seat), _seat_peaks(seat[..., :255]),
+                               rtol=1e-12)
