@@ -22,6 +22,16 @@ what the track carries).  Each draw is judged by the Floquet multipliers of
 its cell (`railtrack.solvers.stability_hint.cell_verdict`): "unstable",
 "stable" or "unknown", counted in `RandomSupport.summary`; any unstable draw
 raises one `UnstableSolutionWarning`.
+
+**Speed.**  On linear laws every draw is the same rail, train, sleepers and
+pads at the same m, so the cell's operators are built once per m and all
+draws are solved as one batch (`railtrack.studies.random_support_batch`):
+m is what "auto" picks for the cell of the mean factor, every draw gets
+its own residual and truncation estimate, and only the draws that miss the
+accuracy are solved again at a larger m.  Other laws are solved draw by
+draw (`railtrack.solve` for a cell).  The draws can be spread over any
+``concurrent.futures`` executor (a Dask client too) with the same results,
+and a progress bar (``tqdm``) is shown for large studies.
 """
 
 from __future__ import annotations
@@ -33,17 +43,21 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..model.cell import SleeperCell, cell_size
-from ..model.foundations import as_foundation
+from ..model.foundations import LinearFoundation, as_foundation
 from ..model.passage import Passage
 from ..model.validation import require_non_negative
 from ..solvers.arguments import require_count
+from ..solvers.auto_harmonics import DEFAULT_ACCURACY, WARN_TRUNCATION
 from ..solvers.cell_auto import solve_track_cell
+from ..solvers.chunk_map import chunk_bounds, map_chunks, show_progress
+from ..solvers.solution import TruncationWarning
 from ..solvers.stability_hint import UnstableSolutionWarning, cell_verdict
+from .random_support_batch import POINTS_PER_SPAN, TIMES, linear_draws
 
 __all__ = ["RandomSupport", "random_support", "scaled_law", "lognormal_factors"]
 
-POINTS_PER_SPAN = 8
-TIMES = 512
+PROGRESS_DRAWS = 500
+"""With ``progress=None`` the bar is shown from this many draws (tens of seconds)."""
 
 
 def lognormal_factors(variation: float, shape, rng: np.random.Generator) -> np.ndarray:
@@ -142,7 +156,7 @@ def _peaks(solution) -> tuple[float, float]:
 
 def random_support(track, train, foundation, *, sleepers: int = 30, variation: float = 0.3,
                    draws: int = 100, seed: int = 0, harmonics="auto",
-                   stability: str = "quick") -> RandomSupport:
+                   stability: str = "quick", progress=None, executor=None) -> RandomSupport:
     """Monte Carlo over cells of `sleepers` sleepers with lognormal ballast stiffness.
 
     Parameters
@@ -160,7 +174,10 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
     seed : int
         For ``numpy.random.default_rng``, >= 0.
     harmonics : int or "auto"
-        As `railtrack.solve`.
+        As `railtrack.solve`.  On a linear law "auto" starts every draw at the
+        m of the cell of the mean factor and steps up only the draws whose own
+        truncation estimate misses the accuracy (module docstring); a draw may
+        so keep a larger m than it would alone, never a worse accuracy.
     stability : {"quick", "full", "off"}
         How each draw is judged (`railtrack.solvers.stability_hint.cell_verdict`):
         "quick" looks at Bloch phase 0 per cell (every disturbance that repeats
@@ -168,6 +185,12 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
         cell of differing sleepers whose Hill matrix has more than
         `railtrack.solvers.stability_hint.QUICK_CELL_SIZE` rows, e.g. 30 sleepers at m > 6), "full" at every
         phase (tens of solves' cost), "off" marks every draw "unknown".
+    progress : bool or None
+        A ``tqdm`` progress bar (on stderr, or a notebook widget): None shows it
+        from `PROGRESS_DRAWS` draws on, True or False force it.
+    executor : concurrent.futures.Executor, optional
+        Runs the chunks of draws (a ``ProcessPoolExecutor``, a Dask ``Client``);
+        default: this process.  The results do not depend on it.
 
     Returns
     -------
@@ -184,25 +207,76 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
     draws, seed = require_count("draws", draws, 1), require_count("seed", seed, 0)
     sleepers = cell_size(sleepers)
     require_non_negative("variation", variation)     # True is no coefficient of variation
+    if not (isinstance(harmonics, str) and harmonics == "auto"):
+        require_count("harmonics", harmonics, 1)
+    shown = show_progress(progress, draws >= PROGRESS_DRAWS)
     passage = Passage(track, train)
     rng = np.random.default_rng(seed)
     factors = lognormal_factors(variation, (draws, sleepers), rng)
     base = SleeperCell.identical(passage, foundation, sleepers)
-    seat, moment = np.full(draws, np.nan), np.full(draws, np.nan)
-    converged, used = np.zeros(draws, bool), np.zeros(draws, int)
-    verdicts = np.full(draws, "unknown", dtype="<U8")
-    for k, row in enumerate(factors):
-        cell = dataclasses.replace(
-            base, foundations=tuple(scaled_law(law, x) for law, x in zip(base.foundations, row)))
-        solution = solve_track_cell(track, train, cell, harmonics, stability="off")
-        converged[k], used[k] = solution.converged, solution.harmonics
-        verdicts[k] = cell_verdict(solution, stability)[0]
-        if solution.converged:
-            seat[k], moment[k] = _peaks(solution)
-    result = RandomSupport(float(variation), factors, seat, moment, converged, used, verdicts)
+    law = base.foundations[0]
+    if isinstance(law, LinearFoundation):
+        found = linear_draws(passage, base, law, factors, harmonics, accuracy=DEFAULT_ACCURACY,
+                             executor=executor, progress=shown)
+        # cell_verdict's rule for a cell on linear laws: stable once converged
+        verdicts = np.where(found["converged"], "stable", "unknown").astype("<U8")
+        _warn_truncation(found, harmonics)
+        values = (found["seat"], found["moment"], found["converged"], found["harmonics"])
+        values += (verdicts,)
+        # a draw the batch did not converge is solved alone, as `railtrack.solve` would
+        for k in np.flatnonzero(~found["converged"]):
+            row = _draw_chunk(track, train, [_draw_cell(base, factors[k])], harmonics,
+                              stability)
+            for array, value in zip(values, row):
+                array[k] = value[0]
+    else:
+        bounds = chunk_bounds(draws, 1 if executor is None else 10)
+        parts = map_chunks(_draw_chunk, [(track, train, [_draw_cell(base, row) for row in
+                                                          factors[a:b]], harmonics, stability)
+                                         for a, b in bounds],
+                           [b - a for a, b in bounds], executor=executor, progress=shown,
+                           description="random_support")
+        values = tuple(np.concatenate([part[i] for part in parts]) for i in range(5))
+    seat, moment, converged, used, verdicts = values
+    result = RandomSupport(float(variation), factors, seat, moment, converged, used,
+                           verdicts.astype("<U8"))
     if np.any(verdicts == "unstable"):
         warnings.warn(UnstableSolutionWarning(
             f"{int(np.sum(verdicts == 'unstable'))} of {draws} draws are unstable periodic "
             "states (RandomSupport.stability): a train does not stay on them, and their peaks "
             f"need not be what the track carries. {result.summary()}"), stacklevel=2)
     return result
+
+
+def _draw_cell(base: SleeperCell, row: np.ndarray) -> SleeperCell:
+    """The cell of one draw: sleeper j on its law's stiffness times X_j."""
+    return dataclasses.replace(
+        base, foundations=tuple(scaled_law(law, x) for law, x in zip(base.foundations, row)))
+
+
+def _draw_chunk(track, train, cells, harmonics, stability: str):
+    """Draws solved one by one (`railtrack.solve` for a cell): their peaks, flags and verdicts."""
+    size = len(cells)
+    seat, moment = np.full(size, np.nan), np.full(size, np.nan)
+    converged, used = np.zeros(size, bool), np.zeros(size, int)
+    verdicts = np.full(size, "unknown", dtype="<U8")
+    for k, cell in enumerate(cells):
+        solution = solve_track_cell(track, train, cell, harmonics, stability="off")
+        converged[k], used[k] = solution.converged, solution.harmonics
+        verdicts[k] = cell_verdict(solution, stability)[0]
+        if solution.converged:
+            seat[k], moment[k] = _peaks(solution)
+    return seat, moment, converged, used, verdicts
+
+
+def _warn_truncation(found: dict, harmonics) -> None:
+    """One `TruncationWarning` for the converged draws whose estimate exceeds the limit."""
+    automatic = isinstance(harmonics, str)
+    limit = DEFAULT_ACCURACY if automatic else WARN_TRUNCATION
+    over = found["converged"] & (found["error"] > limit)
+    if over.any():
+        worst = int(np.nanargmax(np.where(over, found["error"], np.nan)))
+        warnings.warn(TruncationWarning(
+            f"{int(over.sum())} of {over.size} draws have an estimated truncation error above "
+            f"{limit:.1%} of their largest sleeper peak (worst {found['error'][worst]:.1%} at "
+            f"harmonics={found['harmonics'][worst]}); pass a larger harmonics"), stacklevel=3)

@@ -34,20 +34,20 @@ from typing import Any
 
 import numpy as np
 
-from ..equations.harmonic_balance import harmonic_system, require_jacobian_samples, two_sided
+from ..equations.harmonic_balance import harmonic_system, require_jacobian_samples
 from ..model.foundations import as_foundation
 from ..model.passage import Passage
 from ..model.track import Track
 from ..model.train import Train
 from ..solvers.arguments import require_count, require_fraction
-from ..solvers.batch import batch_truncation, member, newton_batch
+from ..solvers.batch import batch_truncation, member
+from ..solvers.chunk_map import chunk_bounds, map_chunks, show_progress
 from ..solvers.solution import ConvergenceWarning, Solution, TruncationWarning
 from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION
 from ..solvers.truncation import MAX_AUTO_HARMONICS, auto_samples, grown_harmonics
-from .period_extremes import period_extremes
 from .sweep_members import (BLOCK, MAX_RESULT_BYTES, check_members_conditioning, warn_members,
                             polynomial_samples, predicted_harmonics, require_fits, rows,
-                            split_fields)
+                            solve_block, split_fields)
 from .sweep_stability import member_stability, require_whole_sleepers, stability_mode
 
 __all__ = ["Sweep", "sweep", "BLOCK", "MAX_RESULT_BYTES"]
@@ -136,7 +136,8 @@ class Sweep:
 
 def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto", *,
           accuracy: float | None = None, tol: float = 1e-10, max_iterations: int = 100,
-          samples: int | None = None, stability: str | bool = "quick", **values) -> Sweep:
+          samples: int | None = None, stability: str | bool = "quick", progress=None,
+          executor=None, **values) -> Sweep:
     """Solve eq. (17) for every value of the swept field(s), all at once.
 
     Parameters
@@ -169,6 +170,12 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
         at m = 15 and 35 ms at m = 30; at m = 25 "full" about 70 ms a member on the fold
         track of chapter 10 (480-545 m/s) and 280 ms on the paper's track
         (30-100 m/s), against 0.5-5 ms a member for the sweep itself.
+    progress : bool or None
+        A ``tqdm`` bar over the blocks of `BLOCK` members: None shows it for
+        more than one block, True or False force it.
+    executor : concurrent.futures.Executor, optional
+        Runs the blocks (a ``ProcessPoolExecutor``, a Dask ``Client``);
+        default: this process.  The results do not depend on it.
     **values : array_like of real numbers, shape (B,)
         The field(s) to sweep by name, e.g. ``speed=...``, ``pad_damping=...``,
         ``stiffness=...``, ``epsilon=...``; several fields sweep together.
@@ -221,7 +228,8 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
     if stability == "full":
         require_whole_sleepers(passage, size, values)
     m = harmonics if not automatic else predicted_harmonics(passage, law, size, accuracy)
-    run = dict(passage=passage, law=law, size=size, tol=tol, max_iterations=max_iterations)
+    run = dict(passage=passage, law=law, size=size, tol=tol, max_iterations=max_iterations,
+               executor=executor, progress=show_progress(progress, size > BLOCK))
     result = _solve(m, samples, None, automatic, **run)
     for _round in range(AUTO_ROUNDS if automatic else 0):
         worst = _worst(result)
@@ -252,25 +260,23 @@ def _worst(result: Sweep) -> int | None:
     return int(np.argmax(errors)) if np.isfinite(errors.max()) else None
 
 
-def _solve(m, samples, initial, automatic, *, passage, law, size, tol, max_iterations) -> Sweep:
-    """Every member at m harmonics, `BLOCK` members at a time."""
+def _solve(m, samples, initial, automatic, *, passage, law, size, tol, max_iterations,
+           executor=None, progress=False) -> Sweep:
+    """Every member at m harmonics, `BLOCK` members at a time (on `executor` if given)."""
     require_fits(size, m)
     if samples is None:
         # exact for these laws, and a quarter of solve's default work per member;
         # a kinked law takes what solve takes: its default, or auto's for 'auto'
         samples = polynomial_samples(law, m) or (auto_samples(m) if automatic else None)
-    parts = []
-    for start in range(0, size, BLOCK):
-        index = np.arange(start, min(start + BLOCK, size))
-        block_passage = rows(passage, index, size)
-        block_law = rows(law, index, size)
-        system = harmonic_system(block_passage, block_law, m, samples)
-        outcome = newton_batch(system, len(index), max_iterations, tol,
-                               None if initial is None else initial[index])
-        errors = batch_truncation(system, outcome.coefficients, len(index))[0]
-        parts.append((two_sided(outcome.coefficients), outcome.converged, outcome.iterations,
-                      outcome.residual, errors,
-                      period_extremes(system, outcome.coefficients, len(index))))
+    bounds = chunk_bounds(size, BLOCK)
+    arguments = []
+    for start, stop in bounds:
+        index = np.arange(start, stop)
+        arguments.append((rows(passage, index, size), rows(law, index, size), len(index), m,
+                          samples, tol, max_iterations,
+                          None if initial is None else initial[index]))
+    parts = map_chunks(solve_block, arguments, [b - a for a, b in bounds], executor=executor,
+                       progress=progress, description=f"sweep, m = {m}")
     joined = [np.concatenate(column) for column in list(zip(*parts))[:5]]
     extremes = {k: np.concatenate([p[5][k] for p in parts]) for k in parts[0][5]}
     return Sweep(values={}, harmonics=m, coefficients=joined[0], converged=joined[1],

@@ -5,7 +5,8 @@ law's fields, as (B, 1) arrays; `require_fits` refuses a sweep whose results
 would exceed `MAX_RESULT_BYTES` before anything is allocated;
 `check_members_conditioning` refuses a member for which eq. (3) loses
 accuracy, as `railtrack.solve` does; `rows` cuts the batched passage and law
-into blocks of `BLOCK` members; `polynomial_samples` and `predicted_harmonics`
+into blocks of `BLOCK` members, which `solve_block` solves (on any executor:
+plain arrays in and out); `polynomial_samples` and `predicted_harmonics`
 choose the AFT samples and the first m.
 """
 
@@ -20,15 +21,18 @@ from ..model.foundations import CubicFoundation, LinearFoundation
 from ..model.passage import Passage
 from ..model.track import Track
 from ..model.train import Train
-from ..solvers.batch import member
+from ..equations.harmonic_balance import harmonic_system, two_sided
+from ..solvers.batch import batch_truncation, member, newton_batch
 from ..solvers.conditioning import ROUNDOFF_LIMIT, check_conditioning
 from ..solvers.solution import ConvergenceWarning, TruncationWarning
 from ..solvers.solve import WARN_TRUNCATION
+from ..solvers.threads import blas_threads
 from ..solvers.truncation import predict_harmonics
+from .period_extremes import period_extremes
 
 __all__ = ["BLOCK", "MAX_RESULT_BYTES", "result_bytes", "require_fits", "split_fields",
            "check_members_conditioning", "predicted_harmonics", "polynomial_samples", "rows",
-           "warn_members"]
+           "warn_members", "solve_block"]
 
 BLOCK = 8192
 """Members solved together: bounds the working memory (the AFT grids and Jacobians)."""
@@ -149,3 +153,21 @@ def warn_members(result: Sweep, automatic: bool, accuracy: float, swept: tuple) 
             f"harmonics={result.harmonics}: {int(np.sum(errors > limit))} member(s) of the sweep "
             f"have an estimated truncation error above {limit:.0%}, up to {errors[worst]:.1%} "
             f"at member {worst} ({advice})"), stacklevel=3)
+
+
+def solve_block(passage: Passage, law, size: int, m: int, samples, tol: float,
+                max_iterations: int, initial=None) -> tuple:
+    """One block of members at m: (c two-sided, converged, iterations, residual, errors, extremes).
+
+    `passage` and `law` are the block's `size` rows (`rows`); `initial` its starting
+    coefficients (B, m+1) or None.  A top-level function of arrays, so that an
+    executor's worker process can run it; BLAS on one thread (stacks of small
+    Jacobians gain nothing from more, `railtrack.solvers.threads`).
+    """
+    with blas_threads(1):
+        system = harmonic_system(passage, law, m, samples)
+        outcome = newton_batch(system, size, max_iterations, tol, initial)
+        errors = batch_truncation(system, outcome.coefficients, size)[0]
+        extremes = period_extremes(system, outcome.coefficients, size)
+    return (two_sided(outcome.coefficients), outcome.converged, outcome.iterations,
+            outcome.residual, errors, extremes)
