@@ -27,7 +27,7 @@ from ..equations.wheel_harmonic_balance import profile_harmonics
 from .guards import FAILED_LEVELS
 from .wheel_newton import solve_wheels
 from .wheel_solution import WheelSolution
-from .wheel_tail import AIM, harmonics_for, profile_tail, tail_estimate, transfer
+from .wheel_tail import AIM, TailFit, harmonics_for, profile_tail, tail_estimate, transfer
 
 __all__ = ["auto_wheels", "wrap", "MAX_HARMONICS"]
 
@@ -75,7 +75,7 @@ def auto_wheels(passage, cell, wheel, profile, groups: int, accuracy: float, tol
     t = np.linspace(0.0, float(passage.period), 4096, endpoint=False)
     tried = [] if fitted else [f"m grows by 1.5 ({tail})"]
     scale = float(np.max(passage.axle_loads))
-    previous, start, failed, steps, stiffness = None, None, 0, 0, 0.0
+    previous, start, failed, steps, fitting = None, None, 0, 0, TailFit(0.0, 0.0)
     change = estimate = float("nan")
     while True:
         raw = solve_wheels(passage, cell, wheel, profile, m, tol=tol,
@@ -103,16 +103,20 @@ def auto_wheels(passage, cell, wheel, profile, groups: int, accuracy: float, tol
                 fitted, estimate = False, float("nan")
                 entry += f"; m grows by 1.5 from here ({fit})"
             else:
-                stiffness = max(stiffness, fit)
+                fitting = fitting | fit
                 if previous is not None:
-                    # the one check: the change of P the last fit predicted against the measured
+                    # the one check: the change of P the last fit predicted against the
+                    # measured one, which scales the fit up where it fell short
                     predicted = tail_estimate(tail, previous[2], previous[0]) - tail_estimate(
                         tail, previous[2], m)
-                    stiffness = max(stiffness, previous[2] * change / max(predicted, 1e-300))
+                    ratio = change / max(predicted, 1e-300)
+                    fitting = fitting | TailFit(ratio * previous[2].stiffness,
+                                                ratio * previous[2].passing)
                     entry += f" (the fit predicted {predicted:.1e} Q)"
-                estimate = tail_estimate(tail, stiffness, m)
-                entry += (f"; P_p ~ {stiffness:.2e} N/m x r_p, the profile's harmonics falling "
-                          f"as p^{tail.decay:.1f}: estimated tail {estimate:.1e} Q")
+                estimate = tail_estimate(tail, fitting, m)
+                entry += (f"; P_p ~ {fitting.stiffness:.2e} N/m x r_p (the profile's harmonics, "
+                          f"falling as p^{tail.decay:.1f}) and the sleepers' passing "
+                          f"<= {fitting.passing:.1e} N / p^3: estimated tail {estimate:.1e} Q")
         tried.append(entry)
         if fitted and estimate <= accuracy:
             break
@@ -120,9 +124,9 @@ def auto_wheels(passage, cell, wheel, profile, groups: int, accuracy: float, tol
             break
         if m >= MAX_HARMONICS:
             break
-        previous, start = (m, force, stiffness), (raw.contact_harmonics, raw.lift)
+        previous, start = (m, force, fitting), (raw.contact_harmonics, raw.lift)
         if fitted:
-            m = min(max(grown, harmonics_for(tail, stiffness, AIM * accuracy, MAX_HARMONICS)),
+            m = min(max(grown, harmonics_for(tail, fitting, AIM * accuracy, MAX_HARMONICS)),
                     MAX_HARMONICS)
         else:
             m = grown
