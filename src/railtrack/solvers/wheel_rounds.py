@@ -5,7 +5,7 @@ With a rail-top profile, "auto" reads m off the contact force's spectrum
 harmonic, a fit of the force's tail on the profile's, one solve (warm) at
 the m whose estimated tail is within the accuracy, and the estimate there,
 refitted and checked against the measured change of P, as
-``truncation_error`` (on the 0.5 mm dip of issue 28: m = 190 then 600,
+``truncation_error`` (on the 0.5 mm dip of issue 28: m = 282 then 549,
 instead of 60, 90, .., 687).  Where the fit cannot be trusted (a flat rail,
 whose force is the sleepers' passing; see `wheel_tail`) m grows by 1.5
 until two successive converged contact-force histories differ by at most

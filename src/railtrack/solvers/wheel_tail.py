@@ -13,7 +13,9 @@ neglected tail
     2 T_P sum_{p > m} |r_p| / max_k Q_k,
 
 an upper bound (triangle inequality) on max over the period of |P - P_m|
-for a force that follows the profile.  On the 0.5 mm x 1 m dip at 45 m/s
+for a force that follows the profile.  The sleeper-passing harmonics
+p = j H / L, which the sleepers drive and not the profile, are left out of
+the fit and their own tail is bounded apart (`TailFit`).  On the 0.5 mm x 1 m dip at 45 m/s
 (p_c = 94) it was 1.3-2.1 times the true error (against m = 1200) for
 m = 300..900; on the coach (26.4 m, p_c = 131) 2.0 and 3.1 times at m = 458
 and 687 (against m = 1031, itself some 2e-4 Q off).  Below 3 p_c, where T_P
@@ -27,7 +29,7 @@ instead (`railtrack.solvers.wheel_rounds`): a flat rail (the force is the
 sleepers' passing, not a profile's), a profile whose harmonics do not fall
 faster than p^-1.5, a bounce above `FIRST_MOST` harmonics (slow trains), or
 a window whose bins disagree on T_P by more than `SPREAD` (another
-excitation, e.g. the sleepers' passing, dominates the top of the spectrum).
+excitation than the profile dominates the top of the spectrum).
 """
 
 from __future__ import annotations
