@@ -110,8 +110,8 @@ def profile_tail(passage, wheel, profile, groups: int, most: int):
     magnitudes = np.abs(np.fft.rfft(np.asarray(profile(x), float))) / PROFILE_SAMPLES
     magnitudes[0] = 0.0
     if not np.any(magnitudes > 0.0):
-        return ("the rail-top profile is flat: the contact force follows the sleepers' passing, "
-                "which the profile's spectrum does not describe")
+        return ("the rail-top profile is flat: the sleepers drive the contact force (their "
+                "passing, any that differ), not a profile whose spectrum the fit could follow")
     scale = float(np.max(passage.axle_loads))
     bounce = np.sqrt(float(wheel.contact_stiffness(wheel.static_compression(scale)))
                      / float(wheel.unsprung_mass))
