@@ -176,7 +176,8 @@ def solve(
         `samples`, `check_foundation` and `strict` apply, `initial`, `split` and
         `fallback` are refused; the quick stability look is not done for
         wheels, and "full" is refused (`railtrack.simulate_time_domain` with
-        ``wheel=`` is the check).
+        ``wheel=`` is the check).  With a profile, ``harmonics="auto"`` reads
+        m off the contact force's spectrum (`railtrack.solvers.wheel_rounds`).
     profile : callable, optional
         The rail-top profile r(x) [m] under the wheels (default: smooth;
         `railtrack.CosineDip` for a dipped weld); it must repeat with the

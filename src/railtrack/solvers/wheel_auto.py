@@ -7,7 +7,8 @@ the smallest such cell: N = 1 for the smooth rail (the wheels feel the
 sleepers pass, harmonics p = H/L, 2H/L, ..), N = period / L for a profile
 with a `period` (a dipped weld once a wagon: N = H/L, every harmonic).
 
-"auto" is `railtrack.solvers.wheel_rounds`; an explicit m is estimated by
+"auto" is `railtrack.solvers.wheel_rounds` (m read off the contact force's
+spectrum, `railtrack.solvers.wheel_tail`); an explicit m is estimated by
 `railtrack.solvers.wheel_truncation`.
 """
 
@@ -145,8 +146,9 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
         if samples is not None:
             raise ValueError("samples needs an explicit harmonics=m; 'auto' chooses m itself")
         result = auto_wheels(passage, cell, wheel, profile, groups, accuracy, tol, iterations)
-        text = (f"harmonics='auto' stopped at m = {result.harmonics}: the contact force changed "
-                f"by {result.truncation_error:.1%} of Q at the last refinement")
+        text = (f"harmonics='auto' stopped at m = {result.harmonics}: the contact force's "
+                f"truncation error is estimated at {result.truncation_error:.1%} of Q (the "
+                f"message says how)")
     else:
         if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) \
                 or harmonics < groups:
