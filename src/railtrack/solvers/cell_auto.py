@@ -30,12 +30,17 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..equations.cell_harmonic_balance import _forces, _synthesize, cell_operators
 from ..model.passage import Passage
 from .arguments import require_count
 from .auto_harmonics import AUTO_ROUNDS, DEFAULT_ACCURACY
 from .cell_newton import solve_cell
 from .cell_solution import CellSolution
+from .cell_truncation import (
+    cell_grown_harmonics,
+    cell_truncation,
+    cell_truncation_errors,
+    estimate,
+)
 from .diagnosis import report
 from .guards import (
     FAILED_LEVELS,
@@ -48,109 +53,13 @@ from .guards import (
     require_scalar_fields,
     truncation_limit,
 )
-from .truncation import auto_samples, grown_harmonics, predict_harmonics
+from .truncation import auto_samples, predict_harmonics
 
 __all__ = ["cell_truncation", "cell_truncation_errors", "cell_grown_harmonics",
            "solve_cell_auto", "solve_track_cell", "MAX_CELL_HARMONICS"]
 
 MAX_CELL_HARMONICS = 400
 """The largest m that harmonics="auto" takes for a cell."""
-CHUNK_ENTRIES = 1_000_000
-"""Matrix entries per group of harmonics in the tail estimate (16 MB a complex array)."""
-
-
-def cell_truncation(solution: CellSolution) -> tuple[float, np.ndarray]:
-    """Estimated truncation error [-] and tail c_{j, m+1..8m} (N, 7m) [m] (module docstring).
-
-    The error is the larger of the sleepers' displacement's and the rail-seat
-    load's (`cell_truncation_errors`): the load converges more slowly.
-    """
-    errors, tail, _ = cell_truncation_errors(solution)
-    return max(errors.values()), tail
-
-
-def cell_truncation_errors(solution: CellSolution) -> tuple[dict[str, float], np.ndarray,
-                                                              np.ndarray]:
-    """Each output's estimated truncation error [-], and the tails of c and p (N, 7m) [m], [N].
-
-    The tail of the seat force is ``p_n = (-M omega_n^2 + Kbar + i omega_n Cbar) c_n + F^+_n``
-    (the law linearised as in the module docstring): the pad passes to the
-    sleeper what its inertia and foundation take.  Where a law kinks (a
-    sleeper landing on its ballast) the sleeper's acceleration jumps, and the
-    pad's force has harmonics falling like 1/n^2 where the displacement's
-    fall like 1/n^4: at 300 m/s on a hanging sleeper an m that puts w within
-    8e-4 leaves the seat load 5 % of its peak off.
-
-    Returns
-    -------
-    errors : dict
-        ``{"sleeper_displacement", "rail_seat_load"}`` -> max over the cell
-        and the period of the neglected part over the largest peak [-].
-    tail, seat_tail : ndarray, shape (N, 7m)
-        c_{j, m+1..8m} [m] and p_{j, m+1..8m} [N].
-    """
-    passage, cell, m = solution.passage, solution.cell, solution.harmonics
-    top = 8 * m
-    samples = auto_samples(top)
-    c = solution.coefficients[:, m:]
-    omega = passage.fundamental_frequency * np.arange(m + 1)
-    w, v = _synthesize(c, omega, samples)
-    spectrum = np.fft.rfft(_forces(cell, w, v), axis=-1) / samples
-    excess = spectrum[:, m + 1:top + 1]                                       # (N, 7m)
-    tangent = _forces(cell, w, v, tangent=True)
-    stiffness, damping = tangent[0].mean(axis=-1), tangent[1].mean(axis=-1)
-    high = passage.fundamental_frequency * np.arange(m + 1, top + 1)
-    tail = np.empty((c.shape[0], high.size), dtype=complex)
-    seat_tail = np.empty_like(tail)
-    # harmonics in groups of about CHUNK_ENTRIES matrix entries: memory stays bounded
-    step = max(1, CHUNK_ENTRIES // c.shape[0] ** 2)
-    for start in range(0, high.size, step):
-        part = slice(start, start + step)
-        ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, high[part])
-        support = (-cell.sleeper_mass * high[part, None] ** 2 + stiffness
-                   + 1j * high[part, None] * damping)
-        blocks = ops.first + ops.second * support[:, None, :]
-        rhs = ops.load - np.einsum("nab,bn->na", ops.second, excess[:, part])
-        tail[:, part] = np.linalg.solve(blocks, rhs[..., None])[..., 0].T
-        seat_tail[:, part] = support.T * tail[:, part] + excess[:, part]
-    errors = {"sleeper_displacement": _tail_share(c, tail, samples),
-              "rail_seat_load": _tail_share(solution.seat_harmonics[:, m:], seat_tail, samples)}
-    return errors, tail, seat_tail
-
-
-def _tail_share(kept: np.ndarray, tail: np.ndarray, samples: int) -> float:
-    """max |sum of the tail| over max |kept + tail|, over every sleeper and the period."""
-    m = kept.shape[1] - 1
-    grid = np.zeros((kept.shape[0], samples // 2 + 1), dtype=complex)
-    grid[:, m + 1:m + 1 + tail.shape[1]] = tail * samples
-    error = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)))
-    grid[:, :m + 1] = kept * samples
-    peak = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)))
-    return float(error / peak) if peak > 0 else float("inf")
-
-
-def cell_grown_harmonics(solution: CellSolution, tail: np.ndarray, seat_tail: np.ndarray,
-                         accuracy: float) -> int:
-    """The m that both the sleepers' displacement and the seat force need for `accuracy`.
-
-    Per sleeper j and output, `grown_harmonics` of its spectrum and tail, with
-    the budget ``accuracy`` times the largest peak of that output in the cell
-    (as `cell_truncation_errors` measures): a sleeper that carries little
-    needs no more than the cell's error allows.
-    """
-    m = solution.harmonics
-    chosen = 1
-    for kept, rest in ((solution.coefficients[:, m:], tail),
-                       (solution.seat_harmonics[:, m:], seat_tail)):
-        spectrum = np.concatenate([kept, rest], axis=1)
-        samples = auto_samples(spectrum.shape[1])
-        grid = np.zeros((spectrum.shape[0], samples // 2 + 1), dtype=complex)
-        grid[:, :spectrum.shape[1]] = spectrum * samples
-        peaks = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)), axis=-1)
-        for j in np.flatnonzero(peaks > 0):
-            share = min(accuracy * peaks.max() / peaks[j], 0.5)
-            chosen = max(chosen, grown_harmonics(kept[j], rest[j], share))
-    return chosen
 
 
 def _first_harmonics(passage: Passage, cell, accuracy: float) -> int:
@@ -197,13 +106,13 @@ def solve_cell_auto(passage: Passage, cell, *, accuracy: float = DEFAULT_ACCURAC
             initial = None if last is None else np.pad(last, ((0, 0), (0, m + 1 - last.shape[1])))
             continue
         failed, rounds = 0, rounds + 1
-        errors, tail, seat_tail = cell_truncation_errors(result)
+        errors, tail, seat_tail, peaks = estimate(result)
         error = max(errors.values())
         result = replace(result, truncation_error=error)
         tried.append(f"m = {m}: converged, estimated truncation error {error:.1e}")
         if error <= accuracy or m >= MAX_CELL_HARMONICS or rounds > AUTO_ROUNDS:
             break
-        grown = cell_grown_harmonics(result, tail, seat_tail, 0.8 * accuracy)
+        grown = cell_grown_harmonics(result, tail, seat_tail, 0.8 * accuracy, peaks)
         bigger = min(MAX_CELL_HARMONICS, max(math.ceil(1.1 * m), grown))
         last = np.concatenate([result.coefficients[:, m:], tail], axis=1)[:, :bigger + 1]
         initial, m = last, bigger

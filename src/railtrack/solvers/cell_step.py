@@ -9,7 +9,8 @@ the harmonics within a sleeper (through its law, dF).  Split each sleeper's
 tangent into its mean over the period and the rest:
 ``dF_{j,n} = (Kbar_j + i omega_n Cbar_j) dc_{j,n} + E_j dc_j``.  The mean part
 joins the rail's blocks, ``B_n = K1_n + K2_n diag(M s_n^2 + Kbar + i omega_n Cbar)``,
-one N x N complex matrix per harmonic.  The rest E is non-zero only for
+one N x N complex matrix per harmonic, solved in the cell's Floquet modes
+where few sleepers differ (`railtrack.equations.cell_blocks`).  The rest E is non-zero only for
 sleepers whose tangent varies over the period (the nonlinear ones, q of them);
 for a linear law, or a gap law that is never touched, it is exactly zero.
 Woodbury's identity then solves ``(B + K2 V^T E V) dx = -R`` with m + 1
@@ -27,6 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..equations.cell_blocks import solve_blocks
 from ..equations.cell_harmonic_balance import (
     CellOperators,
     cell_force_jacobian,
@@ -117,9 +119,7 @@ def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellO
     mean_stiffness, mean_damping = tangent[0][:, 2 * m].real, tangent[1][:, 2 * m].real
     support = (-cell.sleeper_mass * ops.omega[:, None] ** 2 + mean_stiffness
                + 1j * ops.omega[:, None] * mean_damping)                        # (m+1, N)
-    blocks = ops.first + ops.second * support[:, None, :]
-    blocks[0] = blocks[0].real
-    y = -np.linalg.solve(blocks, residual[..., None])[..., 0]
+    y = -solve_blocks(ops, support, residual)
     y[0] = y[0].real
     varying = varying_sleepers(*samples_tangent)
     if varying.size == 0:
@@ -129,7 +129,7 @@ def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellO
     direct[:, diagonal, diagonal] -= (mean_stiffness[varying, None]
                                       + 1j * ops.omega * mean_damping[varying, None])
     per_sleeper = _real_blocks(direct, conjugate)                             # (q, 2m+1, 2m+1)
-    through_rail = np.linalg.solve(blocks, ops.second[:, :, varying])           # (m+1, N, q)
+    through_rail = solve_blocks(ops, support, ops.columns(varying)[1])          # (m+1, N, q)
     q = varying.size
     if q * (2 * m + 1) <= direct_limit:
         rest = _to_pack(per_sleeper)

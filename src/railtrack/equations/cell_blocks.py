@@ -1,0 +1,112 @@
+"""The per-harmonic blocks of a cell solved in its Floquet modes, few sleepers differing (issue 28).
+
+The Newton step, the linear guess and the truncation estimate of a cell
+(`railtrack.solvers.cell_step`, `railtrack.solvers.cell_auto`) solve, for each
+harmonic, ``B_n x_n = r_n`` with
+
+    B_n = K1_n + K2_n diag(S_n),   S_{j,n} = -M_j omega_n^2 + Kbar_j + i omega_n Cbar_j,
+
+the rail, pads and each sleeper's (mean) support.  Where every sleeper has
+the same pad A_0 and support S_0, B_n is diagonal in the Floquet modes
+(`railtrack.equations.cell_modes`): ``B0_n = F diag(den + (den / A_0 + num) S_0) F^H``.
+A cell that differs from that at r sleepers only (one hanging sleeper, a
+weld, a stiff transition) has B_n = B0_n + C_n P^T, C_n the difference of
+those r columns, and Woodbury's identity solves it with two FFTs per
+right-hand side and one r x r system per harmonic,
+
+    x = z - Y (I + P^T Y)^{-1} P^T z,   z = B0^{-1} r,   Y = B0^{-1} C,
+
+O(N log N + N r + r^3) per harmonic instead of the dense O(N^3).  Where many
+sleepers differ (a random support), or where B0_n is singular while B_n is
+not (the reference sleepers carry nothing at omega = 0), those harmonics are
+solved densely.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .cell_modes import CellOperators
+
+__all__ = ["reference_sleeper", "solve_blocks", "WOODBURY_SHARE", "SINGULAR_MODE"]
+
+WOODBURY_SHARE = 1.0 / 3.0
+"""Share of differing sleepers up to which Woodbury's identity is used (beyond, dense)."""
+SINGULAR_MODE = 1e-12
+"""A harmonic whose reference modes have ``|d_s| <= SINGULAR_MODE max_s |d_s|`` is solved
+densely: B0 is (nearly) singular there and Woodbury would amplify round-off."""
+
+
+def reference_sleeper(pad: np.ndarray, support: np.ndarray) -> tuple[int, np.ndarray]:
+    """The sleeper whose pad and support (W, N) most sleepers share, and those that differ.
+
+    Returns
+    -------
+    reference : int
+    differing : ndarray of int
+        Sleepers whose pad or support differs from the reference's (exactly).
+    """
+    keys = [pad[:, j].tobytes() + support[:, j].tobytes() for j in range(pad.shape[1])]
+    counts: dict[bytes, int] = {}
+    for key in keys:
+        counts[key] = counts.get(key, 0) + 1
+    common = max(counts, key=counts.__getitem__)
+    reference = keys.index(common)
+    return reference, np.array([j for j, key in enumerate(keys) if key != common], dtype=int)
+
+
+def _dense(ops: CellOperators, support: np.ndarray, rhs: np.ndarray, rows) -> np.ndarray:
+    """The blocks at `rows` built densely and solved (the O(N^3) path)."""
+    part = CellOperators(*(np.asarray(getattr(ops, f))[rows] for f in
+                           ("omega", "load", "denominator", "numerator", "pad", "theta")))
+    blocks = part.first + part.second * support[rows][:, None, :]
+    return np.linalg.solve(blocks, rhs[rows])
+
+
+def solve_blocks(ops: CellOperators, support: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """``x_n = (K1_n + K2_n diag(S_n))^{-1} r_n`` for every harmonic (module docstring).
+
+    Parameters
+    ----------
+    ops : CellOperators
+    support : ndarray, shape (W, N)
+        S_{j,n} [N/m], each sleeper's support (inertia and mean foundation).
+    rhs : ndarray, shape (W, N) or (W, N, k)
+        r_n [N].
+
+    Returns
+    -------
+    ndarray, shape of `rhs`
+        x_n [m].  At omega = 0 the blocks are real; x is returned as solved
+        (its imaginary part there is round-off of a real right-hand side).
+
+    Raises
+    ------
+    numpy.linalg.LinAlgError
+        If a block (dense path) or a capacitance system is singular.
+    """
+    vector = rhs.ndim == 2
+    rhs = rhs[..., None] if vector else rhs
+    n = support.shape[1]
+    reference, differing = reference_sleeper(ops.pad, support)
+    if differing.size > WOODBURY_SHARE * n:
+        out = _dense(ops, support, rhs, slice(None))
+        return out[..., 0] if vector else out
+    pad0, support0 = ops.pad[:, reference, None], support[:, reference, None]
+    modes = ops.denominator + (ops.denominator / pad0 + ops.numerator) * support0
+    with np.errstate(invalid="ignore"):
+        size = np.max(np.abs(modes), axis=1, keepdims=True)
+        bad = ~np.all(np.isfinite(modes) & (np.abs(modes) > SINGULAR_MODE * size), axis=1)
+    modes = np.where(bad[:, None], 1.0, modes)
+    out = ops.from_modes(ops.to_modes(rhs) / modes[..., None])
+    if differing.size:
+        first, second = ops.columns(differing)
+        sub = support[:, differing]
+        change = (first * (sub / ops.pad[:, differing] - support0 / pad0)[:, None, :]
+                  + (second - first / ops.pad[:, None, differing]) * (sub - support0)[:, None, :])
+        through = ops.from_modes(ops.to_modes(change) / modes[..., None])           # (W, N, r)
+        capacitance = np.eye(differing.size) + through[:, differing, :]
+        out = out - through @ np.linalg.solve(capacitance, out[:, differing, :])
+    if np.any(bad):
+        out[bad] = _dense(ops, support, rhs, bad)
+    return out[..., 0] if vector else out
