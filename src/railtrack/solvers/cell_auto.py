@@ -87,9 +87,16 @@ def solve_cell_auto(passage: Passage, cell, *, accuracy: float = DEFAULT_ACCURAC
     >>> result.converged, bool(result.truncation_error <= 1e-3)
     (True, True)
     """
+    return _auto(passage, cell, accuracy, tol, max_iterations)[0]
+
+
+def _auto(passage: Passage, cell, accuracy: float, tol: float,
+          max_iterations: int) -> tuple[CellSolution, int | None]:
+    """`solve_cell_auto`, and the m its last estimate needs where the cap stopped it (else None)."""
     if not 0.0 < accuracy < 1.0:
         raise ValueError(f"accuracy must be in (0, 1); got {accuracy!r}")
     m = _first_harmonics(passage, cell, accuracy)
+    needed, levels = None, []
     initial, last, tried, failed, rounds = None, None, [], 0, 0
     while True:
         result = solve_cell(passage, cell, m, tol=tol, max_iterations=max_iterations,
@@ -110,14 +117,38 @@ def solve_cell_auto(passage: Passage, cell, *, accuracy: float = DEFAULT_ACCURAC
         error = max(errors.values())
         result = replace(result, truncation_error=error)
         tried.append(f"m = {m}: converged, estimated truncation error {error:.1e}")
-        if error <= accuracy or m >= MAX_CELL_HARMONICS or rounds > AUTO_ROUNDS:
+        if error <= accuracy or rounds > AUTO_ROUNDS:
             break
         grown = cell_grown_harmonics(result, tail, seat_tail, 0.8 * accuracy, peaks)
+        levels.append((m, error))
+        if m >= MAX_CELL_HARMONICS:
+            # a law that kinks or jumps converges slowly: say what m it needs
+            needed, how = _needed(levels, accuracy, grown)
+            tried.append(f"the largest m that 'auto' takes for a cell is {MAX_CELL_HARMONICS}; "
+                         f"about m = {needed} would meet accuracy {accuracy:.1e} ({how})")
+            break
         bigger = min(MAX_CELL_HARMONICS, max(math.ceil(1.1 * m), grown))
         last = np.concatenate([result.coefficients[:, m:], tail], axis=1)[:, :bigger + 1]
         initial, m = last, bigger
     return replace(result, message=f"{result.message}; harmonics='auto' tried "
-                   + "; ".join(tried))
+                   + "; ".join(tried)), needed
+
+
+def _needed(levels: list[tuple[int, float]], accuracy: float, grown: int) -> tuple[int, str]:
+    """The m that meets `accuracy` from the converged levels' (m, error), and how it was found.
+
+    The errors of the last two levels fitted as ``C m^-p`` and extrapolated:
+    a kinked law's error steepens with m (the seat load's harmonics fall
+    as 1/n^2 only once the kink is resolved), so that the fit errs on the
+    safe side, where the spectrum's own extrapolation (`grown`) may fall short.
+    """
+    if len(levels) >= 2 and levels[-2][1] > levels[-1][1] > accuracy:
+        (m0, e0), (m1, e1) = levels[-2], levels[-1]
+        power = math.log(e0 / e1) / math.log(m1 / m0)
+        fitted = math.ceil(m1 * (e1 / accuracy) ** (1.0 / power))
+        if fitted >= grown:
+            return fitted, f"its estimate fell as m^-{power:.1f} from m = {m0} to {m1}"
+    return grown, "its estimated spectrum's extrapolation"
 
 
 def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton", *,
@@ -151,18 +182,22 @@ def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton
         if samples is not None or initial is not None:
             raise ValueError("samples and initial need an explicit harmonics=m; "
                              "'auto' chooses m itself")
-        result = solve_cell_auto(passage, cell, accuracy=accuracy, tol=tol,
-                                 max_iterations=iterations)
+        result, needed = _auto(passage, cell, accuracy, tol, iterations)
     else:
+        needed = None
         require_count("harmonics", harmonics, 1)
         result = solve_cell(passage, cell, int(harmonics), tol=tol, max_iterations=iterations,
                             samples=samples, initial=initial)
         if result.converged:
             result = replace(result, truncation_error=cell_truncation(result)[0])
+    advice = "pass a larger harmonics"
+    if automatic and needed is not None:
+        advice = (f"harmonics='auto' stops at {MAX_CELL_HARMONICS} for a cell (a law that kinks "
+                  f"or jumps converges slowly); about harmonics={needed} would meet accuracy "
+                  f"{accuracy:.1%}")
     result = report(result, strict, truncation_limit(automatic, accuracy),
                     f"harmonics={result.harmonics}: the estimated truncation error is "
-                    f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
-                    f"larger harmonics")
+                    f"{result.truncation_error:.1%} of the largest sleeper peak; {advice}")
     judged = look_at_stability(result, stability, stacklevel=5)
     return result if judged is None else replace(result, stability=judged)
 

@@ -84,19 +84,22 @@ def _to_pack(blocks: np.ndarray) -> np.ndarray:
     return out.reshape(size * q, size * q)
 
 
-def _harmonic_map(matrices: np.ndarray) -> np.ndarray:
-    """Real packed matrix of ``z_n -> T_n z_n`` for complex T (m+1, q, q), T_0 real."""
+def _times_harmonic_map(left: np.ndarray, matrices: np.ndarray) -> np.ndarray:
+    """``left @ H`` with H the real packed matrix of ``z_n -> T_n z_n`` (complex T (m+1, q, q),
+    T_0 real), in O(rows (m+1) q^2): H is block-diagonal over the harmonics, each block
+    the real 2 x 2 form of T_n, so that the dense product's O(rows ((2m+1) q)^2) is not needed.
+    """
     m, q = matrices.shape[0] - 1, matrices.shape[1]
-    size = (2 * m + 1) * q
-    out = np.zeros((size, size))
-    out[:q, :q] = matrices[0].real
-    for n in range(1, m + 1):
-        re = slice(q * n, q * (n + 1))
-        im = slice(q * (m + n), q * (m + n + 1))
-        out[re, re] = matrices[n].real
-        out[re, im] = -matrices[n].imag
-        out[im, re] = matrices[n].imag
-        out[im, im] = matrices[n].real
+    rows = left.shape[0]
+    on_real = left[:, q:q * (m + 1)].reshape(rows, m, q)
+    on_imag = left[:, q * (m + 1):].reshape(rows, m, q)
+    re, im = matrices[1:].real, matrices[1:].imag
+    out = np.empty_like(left)
+    out[:, :q] = left[:, :q] @ matrices[0].real
+    out[:, q:q * (m + 1)] = (np.einsum("rna,nab->rnb", on_real, re)
+                             + np.einsum("rna,nab->rnb", on_imag, im)).reshape(rows, m * q)
+    out[:, q * (m + 1):] = (np.einsum("rna,nab->rnb", on_imag, re)
+                            - np.einsum("rna,nab->rnb", on_real, im)).reshape(rows, m * q)
     return out
 
 
@@ -133,7 +136,7 @@ def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellO
     q = varying.size
     if q * (2 * m + 1) <= direct_limit:
         rest = _to_pack(per_sleeper)
-        reduced = np.eye(rest.shape[0]) + rest @ _harmonic_map(through_rail[:, varying, :])
+        reduced = np.eye(rest.shape[0]) + _times_harmonic_map(rest, through_rail[:, varying, :])
         forces = _unpack(np.linalg.solve(reduced, rest @ pack_harmonics(y[:, varying])), q)
     else:
         forces = _unpack(_iterative(per_sleeper, through_rail[:, varying, :],
@@ -167,6 +170,6 @@ def _iterative(per_sleeper: np.ndarray, response: np.ndarray, target: np.ndarray
     rhs = tangent_part(target)
     solution, info = gmres(operator, rhs, rtol=GMRES_TOL, atol=0.0, restart=60, maxiter=20)
     if info != 0:
-        dense = np.eye(size * q) + _to_pack(per_sleeper) @ _harmonic_map(response)
+        dense = np.eye(size * q) + _times_harmonic_map(_to_pack(per_sleeper), response)
         solution = np.linalg.solve(dense, _to_pack(per_sleeper) @ target)
     return solution
