@@ -30,15 +30,17 @@ from .receptance import receptance_factors
 __all__ = ["CellOperators", "cell_operators"]
 
 
-def _twisted(theta: np.ndarray, values: np.ndarray, columns=None) -> np.ndarray:
-    """Dense ``F diag(values) F^H`` (W, N, N), or its `columns` only (W, N, r)."""
+def _twisted(twist: np.ndarray, values: np.ndarray, columns=None) -> np.ndarray:
+    """Dense ``F diag(values) F^H`` (W, N, N), or its `columns` only (W, N, r).
+
+    `twist` is ``e^{i theta j}`` (W, N).
+    """
     n = values.shape[-1]
     h = np.fft.fft(values, axis=-1) / n
     j = np.arange(n)
     columns = j if columns is None else np.asarray(columns)
-    back = np.exp(-1j * theta[:, None] * j)                                       # (W, N)
-    forth = np.exp(1j * theta[:, None] * columns)                                 # (W, r)
-    return back[:, :, None] * h[:, (j[:, None] - columns[None, :]) % n] * forth[:, None, :]
+    return (np.conj(twist)[:, :, None] * h[:, (j[:, None] - columns[None, :]) % n]
+            * twist[:, None, columns])
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -79,6 +81,11 @@ class CellOperators:
                     new.__dict__[name] = self.__dict__[name]
         return new
 
+    @cached_property
+    def twist(self) -> np.ndarray:
+        """``e^{i theta j}`` (W, N), the phase of sleeper j in the modes."""
+        return np.exp(1j * self.theta[:, None] * np.arange(self.pad.shape[1]))
+
     @property
     def rest(self) -> np.ndarray:
         """Where omega_n = 0 (the rows kept real)."""
@@ -87,34 +94,32 @@ class CellOperators:
     @cached_property
     def first(self) -> np.ndarray:
         """K1_n [N/m], (W, N, N), real at omega = 0."""
-        out = _twisted(self.theta, self.denominator)
+        out = _twisted(self.twist, self.denominator)
         out[self.rest] = out[self.rest].real
         return out
 
     @cached_property
     def second(self) -> np.ndarray:
         """K2_n [-], (W, N, N), real at omega = 0."""
-        out = self.first / self.pad[:, None, :] + _twisted(self.theta, self.numerator)
+        out = self.first / self.pad[:, None, :] + _twisted(self.twist, self.numerator)
         out[self.rest] = out[self.rest].real
         return out
 
     def columns(self, which) -> tuple[np.ndarray, np.ndarray]:
         """Columns `which` (r,) of K1_n and K2_n, each (W, N, r), in O(W N r)."""
         which = np.asarray(which, dtype=int)
-        first = _twisted(self.theta, self.denominator, which)
-        second = first / self.pad[:, None, which] + _twisted(self.theta, self.numerator, which)
+        first = _twisted(self.twist, self.denominator, which)
+        second = first / self.pad[:, None, which] + _twisted(self.twist, self.numerator, which)
         return first, second
 
     def to_modes(self, x: np.ndarray) -> np.ndarray:
         """``F^H x`` for x (W, N) or (W, N, k), by FFT over the sleepers."""
-        phase = np.exp(1j * self.theta[:, None] * np.arange(x.shape[1]))
-        phase = phase.reshape(phase.shape + (1,) * (x.ndim - 2))
+        phase = self.twist.reshape(self.twist.shape + (1,) * (x.ndim - 2))
         return np.sqrt(x.shape[1]) * np.fft.ifft(phase * x, axis=1)
 
     def from_modes(self, z: np.ndarray) -> np.ndarray:
         """``F z`` for z (W, N) or (W, N, k), by FFT over the modes."""
-        phase = np.exp(-1j * self.theta[:, None] * np.arange(z.shape[1]))
-        phase = phase.reshape(phase.shape + (1,) * (z.ndim - 2))
+        phase = np.conj(self.twist).reshape(self.twist.shape + (1,) * (z.ndim - 2))
         return phase * np.fft.fft(z, axis=1) / np.sqrt(z.shape[1])
 
     def modal(self, values: np.ndarray, z: np.ndarray) -> np.ndarray:
@@ -183,8 +188,9 @@ def cell_operators(passage: Passage, pad_stiffness, pad_damping, omega, *,
     gap = receptance_factors(passage, omega).gap
     b = (-4.0 * np.sqrt(n) * axle_factor(passage, omega) * gap
          * passage.sleeper_spacing / passage.wagon_length)
-    load = b[:, None] * np.exp(-1j * theta[:, None] * np.arange(n)) / np.sqrt(n)
+    load = np.zeros((omega.size, n), dtype=complex)
     ops = CellOperators(omega, load, modes.denominator, modes.numerator, pad, theta)
+    load[:] = b[:, None] * np.conj(ops.twist) / np.sqrt(n)
     rest = ops.rest
     if np.any(rest) and (rail_weight or sleeper_weight is not None):
         total = float(passage.train.wagon_load)

@@ -119,14 +119,15 @@ def _auto(passage: Passage, cell, accuracy: float, tol: float,
         tried.append(f"m = {m}: converged, estimated truncation error {error:.1e}")
         if error <= accuracy or rounds > AUTO_ROUNDS:
             break
-        grown = cell_grown_harmonics(result, tail, seat_tail, 0.8 * accuracy, peaks)
         levels.append((m, error))
         if m >= MAX_CELL_HARMONICS:
             # a law that kinks or jumps converges slowly: say what m it needs
-            needed, how = _needed(levels, accuracy, grown)
+            needed, how = _needed(levels, accuracy, lambda: cell_grown_harmonics(
+                result, tail, seat_tail, 0.8 * accuracy, peaks))
             tried.append(f"the largest m that 'auto' takes for a cell is {MAX_CELL_HARMONICS}; "
                          f"about m = {needed} would meet accuracy {accuracy:.1e} ({how})")
             break
+        grown = cell_grown_harmonics(result, tail, seat_tail, 0.8 * accuracy, peaks)
         bigger = min(MAX_CELL_HARMONICS, max(math.ceil(1.1 * m), grown))
         last = np.concatenate([result.coefficients[:, m:], tail], axis=1)[:, :bigger + 1]
         initial, m = last, bigger
@@ -134,21 +135,21 @@ def _auto(passage: Passage, cell, accuracy: float, tol: float,
                    + "; ".join(tried)), needed
 
 
-def _needed(levels: list[tuple[int, float]], accuracy: float, grown: int) -> tuple[int, str]:
+def _needed(levels: list[tuple[int, float]], accuracy: float, grown) -> tuple[int, str]:
     """The m that meets `accuracy` from the converged levels' (m, error), and how it was found.
 
     The errors of the last two levels fitted as ``C m^-p`` and extrapolated:
     a kinked law's error steepens with m (the seat load's harmonics fall
     as 1/n^2 only once the kink is resolved), so that the fit errs on the
-    safe side, where the spectrum's own extrapolation (`grown`) may fall short.
+    safe side.  With one level only, ``grown()``, the spectrum's own
+    extrapolation (`cell_grown_harmonics`).
     """
     if len(levels) >= 2 and levels[-2][1] > levels[-1][1] > accuracy:
         (m0, e0), (m1, e1) = levels[-2], levels[-1]
         power = math.log(e0 / e1) / math.log(m1 / m0)
         fitted = math.ceil(m1 * (e1 / accuracy) ** (1.0 / power))
-        if fitted >= grown:
-            return fitted, f"its estimate fell as m^-{power:.1f} from m = {m0} to {m1}"
-    return grown, "its estimated spectrum's extrapolation"
+        return fitted, f"its estimate fell as m^-{power:.1f} from m = {m0} to {m1}"
+    return grown(), "its estimated spectrum's extrapolation"
 
 
 def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton", *,

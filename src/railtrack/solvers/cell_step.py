@@ -136,7 +136,8 @@ def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellO
     q = varying.size
     if q * (2 * m + 1) <= direct_limit:
         rest = _to_pack(per_sleeper)
-        reduced = np.eye(rest.shape[0]) + _times_harmonic_map(rest, through_rail[:, varying, :])
+        reduced = _times_harmonic_map(rest, through_rail[:, varying, :])
+        reduced[np.diag_indices_from(reduced)] += 1.0
         forces = _unpack(np.linalg.solve(reduced, rest @ pack_harmonics(y[:, varying])), q)
     else:
         forces = _unpack(_iterative(per_sleeper, through_rail[:, varying, :],

@@ -30,7 +30,7 @@ from ..equations.cell_blocks import solve_blocks
 from ..equations.cell_harmonic_balance import _forces, _synthesize, cell_operators
 from ..model.foundations import LinearFoundation
 from .cell_solution import CellSolution
-from .truncation import auto_samples, grown_harmonics
+from .truncation import _grid, auto_samples, grown_harmonics
 
 __all__ = ["cell_truncation", "cell_truncation_errors", "cell_grown_harmonics", "estimate"]
 
@@ -169,15 +169,35 @@ def cell_grown_harmonics(solution: CellSolution, tail: np.ndarray, seat_tail: np
     chosen = 1
     for k, (kept, rest) in enumerate(((solution.coefficients[:, m:], tail),
                                       (solution.seat_harmonics[:, m:], seat_tail))):
+        spectrum = np.concatenate([kept, rest], axis=1)
         if peaks is None:
-            spectrum = np.concatenate([kept, rest], axis=1)
             samples = auto_samples(spectrum.shape[1])
             grid = np.zeros((spectrum.shape[0], samples // 2 + 1), dtype=complex)
             grid[:, :spectrum.shape[1]] = spectrum * samples
             peak = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)), axis=-1)
         else:
             peak = peaks[k]
-        for j in np.flatnonzero(peak > 0):
-            share = min(accuracy * peak.max() / peak[j], 0.5)
-            chosen = max(chosen, grown_harmonics(kept[j], rest[j], share))
+        share = np.minimum(accuracy * peak.max() / np.where(peak > 0, peak, np.inf), 0.5)
+        high = _first_fitting_bound(spectrum, share)
+        # sleepers in decreasing order of the bound on their answer: those whose
+        # bound is below the m already chosen cannot raise it
+        for j in np.argsort(-high, kind="stable"):
+            if high[j] < chosen:
+                break
+            if peak[j] > 0:
+                chosen = max(chosen, grown_harmonics(kept[j], rest[j], share[j]))
     return chosen
+
+
+def _first_fitting_bound(spectrum: np.ndarray, share: np.ndarray) -> np.ndarray:
+    """Per sleeper, an upper bound of `grown_harmonics` (N,): the first m whose neglected part's
+    bound ``2 sum_{n > m} |c_n|`` is within ``share`` of the peak, as `grown_harmonics` starts."""
+    samples = _grid(spectrum.shape[1] - 1) // 2
+    grid = np.zeros((spectrum.shape[0], samples // 2 + 1), dtype=complex)
+    count = min(spectrum.shape[1], samples // 2 + 1)
+    grid[:, :count] = spectrum[:, :count]
+    own = np.max(np.abs(np.fft.irfft(grid * samples, samples, axis=-1)), axis=-1)
+    above = 2.0 * np.cumsum(np.abs(spectrum[:, ::-1]), axis=1)[:, ::-1]
+    after = np.concatenate([above[:, 1:], np.zeros((spectrum.shape[0], 1))], axis=1)
+    fits = after <= (share * own)[:, None]
+    return np.where(fits.any(axis=1), np.argmax(fits, axis=1), spectrum.shape[1] - 1)
