@@ -134,3 +134,19 @@ def test_truncation_estimate_in_the_modes_is_the_dense_one():
     assert solution.converged
     _, tail, _ = cell_truncation_errors(solution)
     assert relative(tail, dense_truncation_tail(solution)) < 1e-10
+
+
+def test_a_nearly_singular_reference_is_solved_densely():
+    # the reference sleepers' support puts one Floquet mode of B0 at 1e-11 of the others at
+    # harmonic 5: Woodbury's terms grow by 1e11 and cancel; the residual sends that harmonic
+    # to the dense solve, where the differing sleeper keeps B well posed
+    k1, eta = pads(())
+    ops = cell_operators(PASSAGE, k1, eta, OMEGA)
+    first, second, _ = dense_operators(PASSAGE, k1, eta, OMEGA)
+    s = support((3,))
+    n, mode = 5, 2
+    den, num, pad = ops.denominator[n, mode], ops.numerator[n, mode], ops.pad[n, 0]
+    s[n, [j for j in range(N) if j != 3]] = -den / (den / pad + num) * (1.0 + 1e-11)
+    rhs = np.random.default_rng(7).normal(size=(OMEGA.size, N)) + 0j
+    dense = np.linalg.solve(first + second * s[:, None, :], rhs[..., None])[..., 0]
+    assert relative(solve_blocks(ops, s, rhs)[n], dense[n]) < 1e-9

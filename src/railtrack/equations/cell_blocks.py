@@ -32,6 +32,9 @@ __all__ = ["reference_sleeper", "solve_blocks", "WOODBURY_SHARE", "SINGULAR_MODE
 
 WOODBURY_SHARE = 1.0 / 3.0
 """Share of differing sleepers up to which Woodbury's identity is used (beyond, dense)."""
+RESIDUAL = 1e-10
+"""A harmonic whose Woodbury solution leaves a residual above RESIDUAL times the size of its
+terms is solved again densely (LU leaves round-off, about 1e-16 of it)."""
 SINGULAR_MODE = 1e-12
 """A harmonic whose reference modes have ``|d_s| <= SINGULAR_MODE max_s |d_s|`` is solved
 densely: B0 is (nearly) singular there and Woodbury would amplify round-off."""
@@ -107,6 +110,13 @@ def solve_blocks(ops: CellOperators, support: np.ndarray, rhs: np.ndarray) -> np
         through = ops.from_modes(ops.to_modes(change) / modes[..., None])           # (W, N, r)
         capacitance = np.eye(differing.size) + through[:, differing, :]
         out = out - through @ np.linalg.solve(capacitance, out[:, differing, :])
+        # Woodbury is exact, but a nearly singular B0 (an undamped reference track near
+        # resonance) or capacitance amplifies round-off: where the residual shows it, dense
+        zero = np.zeros_like(out)
+        first = ops.apply(out, zero, real_at_rest=False)
+        second = ops.apply(zero, support[..., None] * out, real_at_rest=False)
+        scale = sum(np.abs(x).max(axis=(1, 2)) for x in (first, second, rhs))
+        bad |= ~(np.abs(first + second - rhs).max(axis=(1, 2)) <= RESIDUAL * scale)
     if np.any(bad):
         out[bad] = _dense(ops, support, rhs, bad)
     return out[..., 0] if vector else out

@@ -23,6 +23,9 @@ foundations carry the train's mean weight).  For a linear law,
 ``p = (M s^2 + B) c``, ``F^H R_n = 0`` is exactly the scaled mode system of
 `railtrack.equations.cell_linear`.  R_n is in newtons.
 
+The operators are kept by their Floquet factors (`railtrack.equations.cell_modes`):
+R_n costs FFTs over the sleepers, O(N log N) a harmonic, and K1_n, K2_n are
+built densely only where a caller reads them.
 `cell_residual` evaluates R_n with F by AFT on ``samples`` points per period
 (each law called once per group of sleepers sharing it), `cell_jacobian` its
 exact derivative in the real packing ``[Re c_0, Re c_1..m, Im c_1..m]`` (N (2m+1)

@@ -126,15 +126,17 @@ class CellOperators:
         """``values * z`` for per-mode values (W, N) and z (W, N) or (W, N, k)."""
         return values.reshape(values.shape + (1,) * (z.ndim - 2)) * z
 
-    def apply(self, c: np.ndarray, p: np.ndarray) -> np.ndarray:
+    def apply(self, c: np.ndarray, p: np.ndarray, real_at_rest: bool = True) -> np.ndarray:
         """``K1_n c_n + K2_n p_n`` for c, p (W, N) or (W, N, k), in O(W N log N).
 
-        ``= F [den (F^H (c + p / A)) + num (F^H p)]``; real at omega = 0.
+        ``= F [den (F^H (c + p / A)) + num (F^H p)]``; real at omega = 0 unless
+        `real_at_rest` is False (then as the matrices would give it for a complex c, p).
         """
         pad = self.pad.reshape(self.pad.shape + (1,) * (np.ndim(p) - 2))
         out = self.from_modes(self.modal(self.denominator, self.to_modes(c + p / pad))
                               + self.modal(self.numerator, self.to_modes(p)))
-        out[self.rest] = out[self.rest].real
+        if real_at_rest:
+            out[self.rest] = out[self.rest].real
         return out
 
 

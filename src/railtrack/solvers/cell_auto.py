@@ -1,25 +1,18 @@
-"""harmonics="auto" for a cell: the truncation estimate and the rounds that grow m.
+"""harmonics="auto" for a cell: the rounds that grow m until the truncation estimate meets it.
 
-The neglected harmonics n = m+1..8m of a cell are estimated as
-`railtrack.solvers.truncation` does for one sleeper.  The foundation forces
-evaluated on the truncated solution have harmonics above m (the excess
-F^+_n); each law is linearised about its mean tangent (Kbar_j, Cbar_j over
-the period), and the rail, pads and sleepers answer per harmonic,
-
-    [K1_n + K2_n diag(M s^2 + Kbar + i omega_n Cbar)] c_n = g_n - K2_n F^+_n,
-
-the cell's equations (`railtrack.equations.cell_harmonic_balance`) at n > m.
-The error is the largest, over the sleepers, of the tail's max norm over
-the period relative to the largest sleeper peak in the cell, for the
-sleepers' displacement and for the rail-seat load (the pad's force, whose
-tail is ``(-M omega_n^2 + Kbar + i omega_n Cbar) c_n + F^+_n``), whichever is
-larger: the load converges more slowly.  "auto" starts from the m that
-`predict_harmonics` gives the stiffest-to-resolve law of the cell, and grows
-m (by at least 10 %) to what both spectra and their estimated tails need, at
-most `AUTO_ROUNDS` times.  A level that does not converge does not end the
+The estimate is `railtrack.solvers.cell_truncation`'s: the neglected
+harmonics n = m+1..8m, solved with each law linearised about its mean
+tangent, and the largest share of the tail in the sleepers' displacement
+or the rail-seat load (the load converges more slowly).  "auto" starts
+from the m that `predict_harmonics` gives the stiffest-to-resolve law of
+the cell, and grows m (by at least 10 %) to what both spectra and their
+estimated tails need, at most `AUTO_ROUNDS` times and up to
+`MAX_CELL_HARMONICS`.  A level that does not converge does not end the
 search: m grows by half, from the last converged level where there is one,
 up to `FAILED_LEVELS` failures in a row; the message lists each m tried and
-what happened there.
+what happened there.  Stopped by the cap (a law whose force jumps at
+contact: the seat load's error falls about as 1/m), the warning says which
+m the last two levels' errors, extrapolated, put within the accuracy.
 """
 
 from __future__ import annotations
