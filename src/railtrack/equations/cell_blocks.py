@@ -59,11 +59,23 @@ def reference_sleeper(pad: np.ndarray, support: np.ndarray) -> tuple[int, np.nda
 
 
 def _dense(ops: CellOperators, support: np.ndarray, rhs: np.ndarray, rows) -> np.ndarray:
-    """The blocks at `rows` built densely and solved (the O(N^3) path)."""
-    part = CellOperators(*(np.asarray(getattr(ops, f))[rows] for f in
-                           ("omega", "load", "denominator", "numerator", "pad", "theta")))
-    blocks = part.first + part.second * support[rows][:, None, :]
-    return np.linalg.solve(blocks, rhs[rows])
+    """The blocks at `rows` built densely and solved (the O(N^3) path).
+
+    ``B = T^* [H(den) diag(1 + S/A) + H(num) diag(S)] T`` with ``T = diag(e^{i theta j})``
+    and H(x) the plain circulant of ``fft(x)/N``: the twist is applied to the
+    right-hand side and the solution, not to the N x N matrix.
+    """
+    den, num, pad, twist = (np.asarray(x)[rows] for x in
+                            (ops.denominator, ops.numerator, ops.pad, ops.twist))
+    s = support[rows]
+    n = den.shape[-1]
+    j = np.arange(n)
+    index = (j[:, None] - j[None, :]) % n
+    blocks = (np.fft.fft(den, axis=-1)[:, index] * (1.0 + s / pad)[:, None, :]
+              + np.fft.fft(num, axis=-1)[:, index] * s[:, None, :]) / n
+    rest = ops.rest[rows]
+    blocks[rest] = blocks[rest].real
+    return np.conj(twist)[..., None] * np.linalg.solve(blocks, twist[..., None] * rhs[rows])
 
 
 def solve_blocks(ops: CellOperators, support: np.ndarray, rhs: np.ndarray) -> np.ndarray:
