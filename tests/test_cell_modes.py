@@ -150,3 +150,16 @@ def test_a_nearly_singular_reference_is_solved_densely():
     rhs = np.random.default_rng(7).normal(size=(OMEGA.size, N)) + 0j
     dense = np.linalg.solve(first + second * s[:, None, :], rhs[..., None])[..., 0]
     assert relative(solve_blocks(ops, s, rhs)[n], dense[n]) < 1e-9
+
+
+@pytest.mark.parametrize("differing", [(3,), tuple(range(N))])
+def test_blocks_in_groups_of_harmonics_are_the_same_solve(monkeypatch, differing):
+    from railtrack.equations import cell_blocks
+
+    k1, eta = pads()
+    ops = cell_operators(PASSAGE, k1, eta, OMEGA)
+    s = support(differing)
+    rhs = np.random.default_rng(9).normal(size=(OMEGA.size, N)) + 0j
+    whole = solve_blocks(ops, s, rhs)
+    monkeypatch.setattr(cell_blocks, "BLOCK_ENTRIES", 3 * N * N)      # 3 harmonics a group
+    assert relative(solve_blocks(ops, s, rhs), whole) < 1e-13

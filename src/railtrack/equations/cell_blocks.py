@@ -28,8 +28,11 @@ import numpy as np
 
 from .cell_modes import CellOperators
 
-__all__ = ["reference_sleeper", "solve_blocks", "WOODBURY_SHARE", "SINGULAR_MODE"]
+__all__ = ["reference_sleeper", "solve_blocks", "WOODBURY_SHARE", "SINGULAR_MODE", "RESIDUAL",
+           "BLOCK_ENTRIES"]
 
+BLOCK_ENTRIES = 1_000_000
+"""Array entries per group of harmonics (16 MB a complex array)."""
 WOODBURY_SHARE = 1.0 / 3.0
 """Share of differing sleepers up to which Woodbury's identity is used (beyond, dense)."""
 RESIDUAL = 1e-10
@@ -58,28 +61,57 @@ def reference_sleeper(pad: np.ndarray, support: np.ndarray) -> tuple[int, np.nda
     return reference, np.array([j for j, key in enumerate(keys) if key != common], dtype=int)
 
 
-def _dense(ops: CellOperators, support: np.ndarray, rhs: np.ndarray, rows) -> np.ndarray:
-    """The blocks at `rows` built densely and solved (the O(N^3) path).
+def _dense(ops: CellOperators, support: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """The blocks built densely and solved (the O(N^3) path), rhs (W, N, k).
 
     ``B = T^* [H(den) diag(1 + S/A) + H(num) diag(S)] T`` with ``T = diag(e^{i theta j})``
     and H(x) the plain circulant of ``fft(x)/N``: the twist is applied to the
     right-hand side and the solution, not to the N x N matrix.
     """
-    den, num, pad, twist = (np.asarray(x)[rows] for x in
-                            (ops.denominator, ops.numerator, ops.pad, ops.twist))
-    s = support[rows]
-    n = den.shape[-1]
+    n = support.shape[-1]
     j = np.arange(n)
     index = (j[:, None] - j[None, :]) % n
-    blocks = (np.fft.fft(den, axis=-1)[:, index] * (1.0 + s / pad)[:, None, :]
-              + np.fft.fft(num, axis=-1)[:, index] * s[:, None, :]) / n
-    rest = ops.rest[rows]
-    blocks[rest] = blocks[rest].real
-    return np.conj(twist)[..., None] * np.linalg.solve(blocks, twist[..., None] * rhs[rows])
+    blocks = (np.fft.fft(ops.denominator, axis=-1)[:, index] * (1.0 + support / ops.pad)[:, None, :]
+              + np.fft.fft(ops.numerator, axis=-1)[:, index] * support[:, None, :]) / n
+    blocks[ops.rest] = blocks[ops.rest].real
+    return np.conj(ops.twist)[..., None] * np.linalg.solve(blocks, ops.twist[..., None] * rhs)
+
+
+def _woodbury(ops: CellOperators, support: np.ndarray, rhs: np.ndarray, reference: int,
+              differing: np.ndarray) -> np.ndarray:
+    """The blocks solved in the modes with Woodbury over `differing` (module docstring)."""
+    pad0, support0 = ops.pad[:, reference, None], support[:, reference, None]
+    modes = ops.denominator + (ops.denominator / pad0 + ops.numerator) * support0
+    with np.errstate(invalid="ignore"):
+        size = np.max(np.abs(modes), axis=1, keepdims=True)
+        bad = ~np.all(np.isfinite(modes) & (np.abs(modes) > SINGULAR_MODE * size), axis=1)
+    modes = np.where(bad[:, None], 1.0, modes)
+    out = ops.from_modes(ops.to_modes(rhs) / modes[..., None])
+    if differing.size:
+        first, second = ops.columns(differing)
+        sub = support[:, differing]
+        change = (first * (sub / ops.pad[:, differing] - support0 / pad0)[:, None, :]
+                  + (second - first / ops.pad[:, None, differing]) * (sub - support0)[:, None, :])
+        through = ops.from_modes(ops.to_modes(change) / modes[..., None])           # (W, N, r)
+        capacitance = np.eye(differing.size) + through[:, differing, :]
+        out = out - through @ np.linalg.solve(capacitance, out[:, differing, :])
+        # Woodbury is exact, but a nearly singular B0 (an undamped reference track near
+        # resonance) or capacitance amplifies round-off: where the residual shows it, dense
+        zero = np.zeros_like(out)
+        first = ops.apply(out, zero, real_at_rest=False)
+        second = ops.apply(zero, support[..., None] * out, real_at_rest=False)
+        scale = sum(np.abs(x).max(axis=(1, 2)) for x in (first, second, rhs))
+        bad |= ~(np.abs(first + second - rhs).max(axis=(1, 2)) <= RESIDUAL * scale)
+    if np.any(bad):
+        out[bad] = _dense(ops.take(bad), support[bad], rhs[bad])
+    return out
 
 
 def solve_blocks(ops: CellOperators, support: np.ndarray, rhs: np.ndarray) -> np.ndarray:
     """``x_n = (K1_n + K2_n diag(S_n))^{-1} r_n`` for every harmonic (module docstring).
+
+    Harmonics are taken in groups of about `BLOCK_ENTRIES` array entries, so
+    that memory stays bounded however many are asked for.
 
     Parameters
     ----------
@@ -104,31 +136,13 @@ def solve_blocks(ops: CellOperators, support: np.ndarray, rhs: np.ndarray) -> np
     rhs = rhs[..., None] if vector else rhs
     n = support.shape[1]
     reference, differing = reference_sleeper(ops.pad, support)
-    if differing.size > WOODBURY_SHARE * n:
-        out = _dense(ops, support, rhs, slice(None))
-        return out[..., 0] if vector else out
-    pad0, support0 = ops.pad[:, reference, None], support[:, reference, None]
-    modes = ops.denominator + (ops.denominator / pad0 + ops.numerator) * support0
-    with np.errstate(invalid="ignore"):
-        size = np.max(np.abs(modes), axis=1, keepdims=True)
-        bad = ~np.all(np.isfinite(modes) & (np.abs(modes) > SINGULAR_MODE * size), axis=1)
-    modes = np.where(bad[:, None], 1.0, modes)
-    out = ops.from_modes(ops.to_modes(rhs) / modes[..., None])
-    if differing.size:
-        first, second = ops.columns(differing)
-        sub = support[:, differing]
-        change = (first * (sub / ops.pad[:, differing] - support0 / pad0)[:, None, :]
-                  + (second - first / ops.pad[:, None, differing]) * (sub - support0)[:, None, :])
-        through = ops.from_modes(ops.to_modes(change) / modes[..., None])           # (W, N, r)
-        capacitance = np.eye(differing.size) + through[:, differing, :]
-        out = out - through @ np.linalg.solve(capacitance, out[:, differing, :])
-        # Woodbury is exact, but a nearly singular B0 (an undamped reference track near
-        # resonance) or capacitance amplifies round-off: where the residual shows it, dense
-        zero = np.zeros_like(out)
-        first = ops.apply(out, zero, real_at_rest=False)
-        second = ops.apply(zero, support[..., None] * out, real_at_rest=False)
-        scale = sum(np.abs(x).max(axis=(1, 2)) for x in (first, second, rhs))
-        bad |= ~(np.abs(first + second - rhs).max(axis=(1, 2)) <= RESIDUAL * scale)
-    if np.any(bad):
-        out[bad] = _dense(ops, support, rhs, bad)
+    dense = differing.size > WOODBURY_SHARE * n
+    width = n if dense else differing.size + rhs.shape[2] + 1
+    step = max(1, BLOCK_ENTRIES // (n * width))
+    out = np.empty(rhs.shape, dtype=complex)
+    for start in range(0, rhs.shape[0], step):
+        rows = slice(start, start + step)
+        part = ops if step >= rhs.shape[0] else ops.take(rows)
+        out[rows] = (_dense(part, support[rows], rhs[rows]) if dense else
+                     _woodbury(part, support[rows], rhs[rows], reference, differing))
     return out[..., 0] if vector else out

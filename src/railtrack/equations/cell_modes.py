@@ -81,6 +81,10 @@ class CellOperators:
                     new.__dict__[name] = self.__dict__[name]
         return new
 
+    def take(self, rows) -> CellOperators:
+        """The operators at the harmonics `rows` (a slice, indices or a mask)."""
+        return CellOperators(*(getattr(self, f.name)[rows] for f in dataclasses.fields(self)))
+
     @cached_property
     def twist(self) -> np.ndarray:
         """``e^{i theta j}`` (W, N), the phase of sleeper j in the modes."""

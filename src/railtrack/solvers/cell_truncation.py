@@ -35,7 +35,7 @@ from .truncation import _grid, auto_samples, grown_harmonics
 __all__ = ["cell_truncation", "cell_truncation_errors", "cell_grown_harmonics", "estimate"]
 
 CHUNK_ENTRIES = 1_000_000
-"""Matrix entries per group of harmonics in the tail estimate (16 MB a complex array)."""
+"""Entries per group of harmonics in the tail estimate (16 MB a complex array)."""
 
 
 def _excess(cell, c: np.ndarray, omega: np.ndarray, samples: int, top: int):
@@ -114,8 +114,9 @@ def estimate(solution: CellSolution):
     high = passage.fundamental_frequency * np.arange(m + 1, top + 1)
     tail = np.empty((c.shape[0], high.size), dtype=complex)
     seat_tail = np.empty_like(tail)
-    # harmonics in groups of about CHUNK_ENTRIES matrix entries: memory stays bounded
-    step = max(1, CHUNK_ENTRIES // c.shape[0] ** 2)
+    # harmonics in groups of about CHUNK_ENTRIES entries of (harmonic, sleeper) arrays:
+    # memory stays bounded (`solve_blocks` groups its own matrices)
+    step = max(1, CHUNK_ENTRIES // c.shape[0])
     for start in range(0, high.size, step):
         part = slice(start, start + step)
         ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, high[part])
