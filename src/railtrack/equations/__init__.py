@@ -7,8 +7,10 @@ coupling P), `load` (eqs. 9-16: the load F), `harmonic_balance` (eqs.
 (eq. 23, the closed form of the linear law), `bowl` (the deflection bowl)
 `dispersion` (the free waves of the smeared track), `hill` (eq. 17
 linearised), and for a cell of N differing sleepers `cell_receptance` (eq. 3
-generalised), `cell_linear`, `cell_harmonic_balance`, `cell_rail_field` and `cell_hill`
-(Hill's matrix of the cell); for the
+generalised), `cell_linear`, `cell_harmonic_balance`, `cell_modes` (its operators
+kept in the Floquet modes), `cell_blocks` (their blocks solved there, by
+Woodbury over the few sleepers that differ), `cell_rail_field` and
+`cell_hill` (Hill's matrix of the cell); for the
 wheel on the rail `wheel_train_receptance` (the free rail under wheels whose
 forces vary) and `timoshenko_receptance` (eq. 3 with shear and rotary inertia).
 

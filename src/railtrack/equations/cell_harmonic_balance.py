@@ -23,6 +23,9 @@ foundations carry the train's mean weight).  For a linear law,
 ``p = (M s^2 + B) c``, ``F^H R_n = 0`` is exactly the scaled mode system of
 `railtrack.equations.cell_linear`.  R_n is in newtons.
 
+The operators are kept by their Floquet factors (`railtrack.equations.cell_modes`):
+R_n costs FFTs over the sleepers, O(N log N) a harmonic, and K1_n, K2_n are
+built densely only where a caller reads them.
 `cell_residual` evaluates R_n with F by AFT on ``samples`` points per period
 (each law called once per group of sleepers sharing it), `cell_jacobian` its
 exact derivative in the real packing ``[Re c_0, Re c_1..m, Im c_1..m]`` (N (2m+1)
@@ -35,96 +38,14 @@ answer delayed only up to that.
 
 from __future__ import annotations
 
-from typing import NamedTuple
-
 import numpy as np
 
-from ..model.passage import Passage
-from .cell_receptance import cell_receptance_modes
+from .cell_modes import CellOperators, cell_operators
 from .harmonic_balance import NonFiniteForceError
-from .load import axle_factor
-from .receptance import receptance_factors
 
 __all__ = ["CellOperators", "cell_operators", "cell_force_jacobian", "cell_residual",
            "cell_jacobian", "tangent_spectrum", "pack_harmonics", "unpack_harmonics",
            "two_sided_norm"]
-
-
-class CellOperators(NamedTuple):
-    """The per-harmonic matrices of ``R_n = K1_n c_n + K2_n p_n - g_n``; see `cell_operators`."""
-
-    omega: np.ndarray        # (m+1,) [rad/s]
-    first: np.ndarray        # K1_n, (m+1, N, N) [N/m]
-    second: np.ndarray       # K2_n, (m+1, N, N) [-]
-    load: np.ndarray         # g_n, (m+1, N) [N]
-
-
-def cell_operators(passage: Passage, pad_stiffness, pad_damping, omega, *,
-                   sleeper_weight=None, rail_weight: float = 0.0) -> CellOperators:
-    """K1_n, K2_n and g_n of the module docstring, for omega_n >= 0, in sleeper coordinates.
-
-    Parameters
-    ----------
-    passage : Passage
-        Scalar-valued rail (EI, rho S), spacing L and train.
-    pad_stiffness, pad_damping : array_like, shape (N,)
-        k1_j > 0 [N/m] and eta1_j >= 0 [N s/m] of the cell's pads.
-    omega : array_like, shape (W,)
-        omega_n >= 0 [rad/s].
-    sleeper_weight : array_like, shape (N,), optional
-        M_j g [N], the sleepers' self-weight (default none, as the paper).
-    rail_weight : float
-        rho S g [N/m], the rail's self-weight (default 0).
-
-    Self-weight is static: it enters g_0 alone.  The rail's weight is a
-    uniform load, as the train's mean is (``sum_k Q_k / H`` per metre), so
-    it adds ``rho S g H`` to sum_k Q_k in b_0; the sleepers' weights act on
-    the sleepers, ``p_{j,0} + M_j g``, so g_0 loses ``K2_0 (M g)``.
-
-    Returns
-    -------
-    CellOperators
-        K1 and K2 real at omega = 0 up to round-off (their imaginary part is
-        removed there), g real there.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> passage = Passage.paper()
-    >>> ops = cell_operators(passage, [1.8e8] * 3, [0.0] * 3, np.array([0.0, 15.7]))
-    >>> ops.first.shape, bool(np.all(ops.load[0].imag == 0))
-    ((2, 3, 3), True)
-    >>> # the statics: sum of the n = 0 rows of K2 times p is the train's weight per sleeper
-    >>> q = float(passage.static_load_per_sleeper)
-    >>> p = np.full(3, -q)
-    >>> bool(np.allclose(ops.second[0] @ p, ops.load[0], rtol=1e-12))
-    True
-    """
-    omega = np.atleast_1d(np.asarray(omega, dtype=float))
-    k1 = np.asarray(pad_stiffness, dtype=float)
-    n = k1.size
-    modes = cell_receptance_modes(passage, omega, n)                      # (W, N) each
-    j = np.arange(n)
-    basis = np.exp(-1j * j[None, :, None] * modes.phase[:, None, :]) / np.sqrt(n)    # (W, j, s)
-    adjoint = np.conj(np.swapaxes(basis, -1, -2))
-    first = (basis * modes.denominator[:, None, :]) @ adjoint
-    pad = k1 + 1j * omega[:, None] * np.asarray(pad_damping, dtype=float)            # (W, N)
-    second = first / pad[:, None, :] + (basis * modes.numerator[:, None, :]) @ adjoint
-    gap = receptance_factors(passage, omega).gap
-    b = (-4.0 * np.sqrt(n) * axle_factor(passage, omega) * gap
-         * passage.sleeper_spacing / passage.wagon_length)
-    load = b[:, None] * basis[:, :, 0]
-    rest = omega == 0.0
-    if np.any(rest) and (rail_weight or sleeper_weight is not None):
-        total = float(passage.train.wagon_load)
-        weight = float(rail_weight) * passage.wagon_length
-        load[rest] *= (total + weight) / total
-        if sleeper_weight is not None:
-            load[rest] -= second[rest].real @ np.asarray(sleeper_weight, dtype=float)
-    first[rest] = first[rest].real
-    second[rest] = second[rest].real
-    load[rest] = load[rest].real
-    return CellOperators(omega, first, second, load)
 
 
 def cell_force_jacobian(stiffness: np.ndarray, damping: np.ndarray, omega: np.ndarray):
@@ -223,9 +144,7 @@ def cell_residual(cell, coefficients: np.ndarray, ops: CellOperators, samples: i
     w, v = _synthesize(coefficients, ops.omega, samples)
     force = np.fft.rfft(_forces(cell, w, v), axis=-1)[:, :m + 1] / samples
     p = -cell.sleeper_mass[:, None] * ops.omega**2 * coefficients + force
-    res = (np.einsum("nab,bn->na", ops.first, coefficients)
-           + np.einsum("nab,bn->na", ops.second, p) - ops.load)
-    return res, force
+    return ops.apply(coefficients.T, p.T) - ops.load, force
 
 
 def tangent_spectrum(cell, coefficients: np.ndarray, ops: CellOperators, samples: int):

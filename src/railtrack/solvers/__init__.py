@@ -8,6 +8,7 @@
 of the pads, the foundation and the loads), `floquet` and `contour`
 (stability by Hill's method), and for a cell of N sleepers `cell_newton`,
 `cell_step` (its structured Newton step), `cell_auto` (m = "auto"),
+`cell_truncation` (its truncation estimate, in the Floquet modes),
 `cell_static` (the track under its own weight), `cell_solution` and
 `cell_floquet` (its Floquet multipliers, Hill's matrix of the cell).
 

@@ -1,25 +1,18 @@
-"""harmonics="auto" for a cell: the truncation estimate and the rounds that grow m.
+"""harmonics="auto" for a cell: the rounds that grow m until the truncation estimate meets it.
 
-The neglected harmonics n = m+1..8m of a cell are estimated as
-`railtrack.solvers.truncation` does for one sleeper.  The foundation forces
-evaluated on the truncated solution have harmonics above m (the excess
-F^+_n); each law is linearised about its mean tangent (Kbar_j, Cbar_j over
-the period), and the rail, pads and sleepers answer per harmonic,
-
-    [K1_n + K2_n diag(M s^2 + Kbar + i omega_n Cbar)] c_n = g_n - K2_n F^+_n,
-
-the cell's equations (`railtrack.equations.cell_harmonic_balance`) at n > m.
-The error is the largest, over the sleepers, of the tail's max norm over
-the period relative to the largest sleeper peak in the cell, for the
-sleepers' displacement and for the rail-seat load (the pad's force, whose
-tail is ``(-M omega_n^2 + Kbar + i omega_n Cbar) c_n + F^+_n``), whichever is
-larger: the load converges more slowly.  "auto" starts from the m that
-`predict_harmonics` gives the stiffest-to-resolve law of the cell, and grows
-m (by at least 10 %) to what both spectra and their estimated tails need, at
-most `AUTO_ROUNDS` times.  A level that does not converge does not end the
+The estimate is `railtrack.solvers.cell_truncation`'s: the neglected
+harmonics n = m+1..8m, solved with each law linearised about its mean
+tangent, and the largest share of the tail in the sleepers' displacement
+or the rail-seat load (the load converges more slowly).  "auto" starts
+from the m that `predict_harmonics` gives the stiffest-to-resolve law of
+the cell, and grows m (by at least 10 %) to what both spectra and their
+estimated tails need, at most `AUTO_ROUNDS` times and up to
+`MAX_CELL_HARMONICS`.  A level that does not converge does not end the
 search: m grows by half, from the last converged level where there is one,
 up to `FAILED_LEVELS` failures in a row; the message lists each m tried and
-what happened there.
+what happened there.  Stopped by the cap (a law whose force jumps at
+contact: the seat load's error falls about as 1/m), the warning says which
+m the last two levels' errors, extrapolated, put within the accuracy.
 """
 
 from __future__ import annotations
@@ -30,12 +23,17 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..equations.cell_harmonic_balance import _forces, _synthesize, cell_operators
 from ..model.passage import Passage
 from .arguments import require_count
 from .auto_harmonics import AUTO_ROUNDS, DEFAULT_ACCURACY
 from .cell_newton import solve_cell
 from .cell_solution import CellSolution
+from .cell_truncation import (
+    cell_grown_harmonics,
+    cell_truncation,
+    cell_truncation_errors,
+    estimate,
+)
 from .diagnosis import report
 from .guards import (
     FAILED_LEVELS,
@@ -48,109 +46,13 @@ from .guards import (
     require_scalar_fields,
     truncation_limit,
 )
-from .truncation import auto_samples, grown_harmonics, predict_harmonics
+from .truncation import auto_samples, predict_harmonics
 
 __all__ = ["cell_truncation", "cell_truncation_errors", "cell_grown_harmonics",
            "solve_cell_auto", "solve_track_cell", "MAX_CELL_HARMONICS"]
 
 MAX_CELL_HARMONICS = 400
 """The largest m that harmonics="auto" takes for a cell."""
-CHUNK_ENTRIES = 1_000_000
-"""Matrix entries per group of harmonics in the tail estimate (16 MB a complex array)."""
-
-
-def cell_truncation(solution: CellSolution) -> tuple[float, np.ndarray]:
-    """Estimated truncation error [-] and tail c_{j, m+1..8m} (N, 7m) [m] (module docstring).
-
-    The error is the larger of the sleepers' displacement's and the rail-seat
-    load's (`cell_truncation_errors`): the load converges more slowly.
-    """
-    errors, tail, _ = cell_truncation_errors(solution)
-    return max(errors.values()), tail
-
-
-def cell_truncation_errors(solution: CellSolution) -> tuple[dict[str, float], np.ndarray,
-                                                              np.ndarray]:
-    """Each output's estimated truncation error [-], and the tails of c and p (N, 7m) [m], [N].
-
-    The tail of the seat force is ``p_n = (-M omega_n^2 + Kbar + i omega_n Cbar) c_n + F^+_n``
-    (the law linearised as in the module docstring): the pad passes to the
-    sleeper what its inertia and foundation take.  Where a law kinks (a
-    sleeper landing on its ballast) the sleeper's acceleration jumps, and the
-    pad's force has harmonics falling like 1/n^2 where the displacement's
-    fall like 1/n^4: at 300 m/s on a hanging sleeper an m that puts w within
-    8e-4 leaves the seat load 5 % of its peak off.
-
-    Returns
-    -------
-    errors : dict
-        ``{"sleeper_displacement", "rail_seat_load"}`` -> max over the cell
-        and the period of the neglected part over the largest peak [-].
-    tail, seat_tail : ndarray, shape (N, 7m)
-        c_{j, m+1..8m} [m] and p_{j, m+1..8m} [N].
-    """
-    passage, cell, m = solution.passage, solution.cell, solution.harmonics
-    top = 8 * m
-    samples = auto_samples(top)
-    c = solution.coefficients[:, m:]
-    omega = passage.fundamental_frequency * np.arange(m + 1)
-    w, v = _synthesize(c, omega, samples)
-    spectrum = np.fft.rfft(_forces(cell, w, v), axis=-1) / samples
-    excess = spectrum[:, m + 1:top + 1]                                       # (N, 7m)
-    tangent = _forces(cell, w, v, tangent=True)
-    stiffness, damping = tangent[0].mean(axis=-1), tangent[1].mean(axis=-1)
-    high = passage.fundamental_frequency * np.arange(m + 1, top + 1)
-    tail = np.empty((c.shape[0], high.size), dtype=complex)
-    seat_tail = np.empty_like(tail)
-    # harmonics in groups of about CHUNK_ENTRIES matrix entries: memory stays bounded
-    step = max(1, CHUNK_ENTRIES // c.shape[0] ** 2)
-    for start in range(0, high.size, step):
-        part = slice(start, start + step)
-        ops = cell_operators(passage, cell.pad_stiffness, cell.pad_damping, high[part])
-        support = (-cell.sleeper_mass * high[part, None] ** 2 + stiffness
-                   + 1j * high[part, None] * damping)
-        blocks = ops.first + ops.second * support[:, None, :]
-        rhs = ops.load - np.einsum("nab,bn->na", ops.second, excess[:, part])
-        tail[:, part] = np.linalg.solve(blocks, rhs[..., None])[..., 0].T
-        seat_tail[:, part] = support.T * tail[:, part] + excess[:, part]
-    errors = {"sleeper_displacement": _tail_share(c, tail, samples),
-              "rail_seat_load": _tail_share(solution.seat_harmonics[:, m:], seat_tail, samples)}
-    return errors, tail, seat_tail
-
-
-def _tail_share(kept: np.ndarray, tail: np.ndarray, samples: int) -> float:
-    """max |sum of the tail| over max |kept + tail|, over every sleeper and the period."""
-    m = kept.shape[1] - 1
-    grid = np.zeros((kept.shape[0], samples // 2 + 1), dtype=complex)
-    grid[:, m + 1:m + 1 + tail.shape[1]] = tail * samples
-    error = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)))
-    grid[:, :m + 1] = kept * samples
-    peak = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)))
-    return float(error / peak) if peak > 0 else float("inf")
-
-
-def cell_grown_harmonics(solution: CellSolution, tail: np.ndarray, seat_tail: np.ndarray,
-                         accuracy: float) -> int:
-    """The m that both the sleepers' displacement and the seat force need for `accuracy`.
-
-    Per sleeper j and output, `grown_harmonics` of its spectrum and tail, with
-    the budget ``accuracy`` times the largest peak of that output in the cell
-    (as `cell_truncation_errors` measures): a sleeper that carries little
-    needs no more than the cell's error allows.
-    """
-    m = solution.harmonics
-    chosen = 1
-    for kept, rest in ((solution.coefficients[:, m:], tail),
-                       (solution.seat_harmonics[:, m:], seat_tail)):
-        spectrum = np.concatenate([kept, rest], axis=1)
-        samples = auto_samples(spectrum.shape[1])
-        grid = np.zeros((spectrum.shape[0], samples // 2 + 1), dtype=complex)
-        grid[:, :spectrum.shape[1]] = spectrum * samples
-        peaks = np.max(np.abs(np.fft.irfft(grid, samples, axis=-1)), axis=-1)
-        for j in np.flatnonzero(peaks > 0):
-            share = min(accuracy * peaks.max() / peaks[j], 0.5)
-            chosen = max(chosen, grown_harmonics(kept[j], rest[j], share))
-    return chosen
 
 
 def _first_harmonics(passage: Passage, cell, accuracy: float) -> int:
@@ -178,9 +80,16 @@ def solve_cell_auto(passage: Passage, cell, *, accuracy: float = DEFAULT_ACCURAC
     >>> result.converged, bool(result.truncation_error <= 1e-3)
     (True, True)
     """
+    return _auto(passage, cell, accuracy, tol, max_iterations)[0]
+
+
+def _auto(passage: Passage, cell, accuracy: float, tol: float,
+          max_iterations: int) -> tuple[CellSolution, int | None]:
+    """`solve_cell_auto`, and the m its last estimate needs where the cap stopped it (else None)."""
     if not 0.0 < accuracy < 1.0:
         raise ValueError(f"accuracy must be in (0, 1); got {accuracy!r}")
     m = _first_harmonics(passage, cell, accuracy)
+    needed, levels = None, []
     initial, last, tried, failed, rounds = None, None, [], 0, 0
     while True:
         result = solve_cell(passage, cell, m, tol=tol, max_iterations=max_iterations,
@@ -197,18 +106,43 @@ def solve_cell_auto(passage: Passage, cell, *, accuracy: float = DEFAULT_ACCURAC
             initial = None if last is None else np.pad(last, ((0, 0), (0, m + 1 - last.shape[1])))
             continue
         failed, rounds = 0, rounds + 1
-        errors, tail, seat_tail = cell_truncation_errors(result)
+        errors, tail, seat_tail, peaks = estimate(result)
         error = max(errors.values())
         result = replace(result, truncation_error=error)
         tried.append(f"m = {m}: converged, estimated truncation error {error:.1e}")
-        if error <= accuracy or m >= MAX_CELL_HARMONICS or rounds > AUTO_ROUNDS:
+        if error <= accuracy or rounds > AUTO_ROUNDS:
             break
-        grown = cell_grown_harmonics(result, tail, seat_tail, 0.8 * accuracy)
+        levels.append((m, error))
+        if m >= MAX_CELL_HARMONICS:
+            # a law that kinks or jumps converges slowly: say what m it needs
+            needed, how = _needed(levels, accuracy, lambda: cell_grown_harmonics(
+                result, tail, seat_tail, 0.8 * accuracy, peaks))
+            tried.append(f"the largest m that 'auto' takes for a cell is {MAX_CELL_HARMONICS}; "
+                         f"about m = {needed} would meet accuracy {accuracy:.1e} ({how})")
+            break
+        grown = cell_grown_harmonics(result, tail, seat_tail, 0.8 * accuracy, peaks)
         bigger = min(MAX_CELL_HARMONICS, max(math.ceil(1.1 * m), grown))
         last = np.concatenate([result.coefficients[:, m:], tail], axis=1)[:, :bigger + 1]
         initial, m = last, bigger
     return replace(result, message=f"{result.message}; harmonics='auto' tried "
-                   + "; ".join(tried))
+                   + "; ".join(tried)), needed
+
+
+def _needed(levels: list[tuple[int, float]], accuracy: float, grown) -> tuple[int, str]:
+    """The m that meets `accuracy` from the converged levels' (m, error), and how it was found.
+
+    The errors of the last two levels fitted as ``C m^-p`` and extrapolated:
+    a kinked law's error steepens with m (the seat load's harmonics fall
+    as 1/n^2 only once the kink is resolved), so that the fit errs on the
+    safe side.  With one level only, ``grown()``, the spectrum's own
+    extrapolation (`cell_grown_harmonics`).
+    """
+    if len(levels) >= 2 and levels[-2][1] > levels[-1][1] > accuracy:
+        (m0, e0), (m1, e1) = levels[-2], levels[-1]
+        power = math.log(e0 / e1) / math.log(m1 / m0)
+        fitted = math.ceil(m1 * (e1 / accuracy) ** (1.0 / power))
+        return fitted, f"its estimate fell as m^-{power:.1f} from m = {m0} to {m1}"
+    return grown(), "its estimated spectrum's extrapolation"
 
 
 def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton", *,
@@ -242,18 +176,22 @@ def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton
         if samples is not None or initial is not None:
             raise ValueError("samples and initial need an explicit harmonics=m; "
                              "'auto' chooses m itself")
-        result = solve_cell_auto(passage, cell, accuracy=accuracy, tol=tol,
-                                 max_iterations=iterations)
+        result, needed = _auto(passage, cell, accuracy, tol, iterations)
     else:
+        needed = None
         require_count("harmonics", harmonics, 1)
         result = solve_cell(passage, cell, int(harmonics), tol=tol, max_iterations=iterations,
                             samples=samples, initial=initial)
         if result.converged:
             result = replace(result, truncation_error=cell_truncation(result)[0])
+    advice = "pass a larger harmonics"
+    if automatic and needed is not None:
+        advice = (f"harmonics='auto' stops at {MAX_CELL_HARMONICS} for a cell (a law that kinks "
+                  f"or jumps converges slowly); about harmonics={needed} would meet accuracy "
+                  f"{accuracy:.1%}")
     result = report(result, strict, truncation_limit(automatic, accuracy),
                     f"harmonics={result.harmonics}: the estimated truncation error is "
-                    f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
-                    f"larger harmonics")
+                    f"{result.truncation_error:.1%} of the largest sleeper peak; {advice}")
     judged = look_at_stability(result, stability, stacklevel=5)
     return result if judged is None else replace(result, stability=judged)
 

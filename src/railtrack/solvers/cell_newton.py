@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..equations.cell_blocks import solve_blocks
 from ..equations.cell_harmonic_balance import cell_operators, cell_residual, two_sided_norm
 from ..equations.harmonic_balance import (
     NonFiniteForceError,
@@ -47,8 +48,7 @@ def _linear_guess(passage: Passage, cell: SleeperCell, ops) -> np.ndarray:
     for attempt in range(2):
         support = cell.sleeper_mass * s**2 + pairs[:, 0] + s * pairs[:, 1]       # (m+1, N)
         try:
-            guess = np.linalg.solve(ops.first + ops.second * support[:, None, :],
-                                    ops.load[..., None])[..., 0]
+            guess = solve_blocks(ops, support, ops.load)
             if np.all(np.isfinite(guess)):
                 break
         except np.linalg.LinAlgError:
@@ -131,7 +131,7 @@ def solve_cell(passage: Passage, cell: SleeperCell, harmonics: int, *, tol: floa
             raise ValueError("operators were built for other frequencies than this solve's")
     if extra_load is not None:
         ops = ops._replace(load=ops.load + np.asarray(extra_load))
-    if not all(np.all(np.isfinite(x)) for x in ops[1:]):
+    if not all(np.all(np.isfinite(x)) for x in (ops.load, ops.denominator, ops.numerator)):
         raise ValueError("the cell's operators are not finite (eq. 3 overflows); check the "
                          "rail's EI, rho S and L")
     scale = two_sided_norm(ops.load)

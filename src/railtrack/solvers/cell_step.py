@@ -9,7 +9,8 @@ the harmonics within a sleeper (through its law, dF).  Split each sleeper's
 tangent into its mean over the period and the rest:
 ``dF_{j,n} = (Kbar_j + i omega_n Cbar_j) dc_{j,n} + E_j dc_j``.  The mean part
 joins the rail's blocks, ``B_n = K1_n + K2_n diag(M s_n^2 + Kbar + i omega_n Cbar)``,
-one N x N complex matrix per harmonic.  The rest E is non-zero only for
+one N x N complex matrix per harmonic, solved in the cell's Floquet modes
+where few sleepers differ (`railtrack.equations.cell_blocks`).  The rest E is non-zero only for
 sleepers whose tangent varies over the period (the nonlinear ones, q of them);
 for a linear law, or a gap law that is never touched, it is exactly zero.
 Woodbury's identity then solves ``(B + K2 V^T E V) dx = -R`` with m + 1
@@ -27,6 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..equations.cell_blocks import solve_blocks
 from ..equations.cell_harmonic_balance import (
     CellOperators,
     cell_force_jacobian,
@@ -82,19 +84,22 @@ def _to_pack(blocks: np.ndarray) -> np.ndarray:
     return out.reshape(size * q, size * q)
 
 
-def _harmonic_map(matrices: np.ndarray) -> np.ndarray:
-    """Real packed matrix of ``z_n -> T_n z_n`` for complex T (m+1, q, q), T_0 real."""
+def _times_harmonic_map(left: np.ndarray, matrices: np.ndarray) -> np.ndarray:
+    """``left @ H`` with H the real packed matrix of ``z_n -> T_n z_n`` (complex T (m+1, q, q),
+    T_0 real), in O(rows (m+1) q^2): H is block-diagonal over the harmonics, each block
+    the real 2 x 2 form of T_n, so that the dense product's O(rows ((2m+1) q)^2) is not needed.
+    """
     m, q = matrices.shape[0] - 1, matrices.shape[1]
-    size = (2 * m + 1) * q
-    out = np.zeros((size, size))
-    out[:q, :q] = matrices[0].real
-    for n in range(1, m + 1):
-        re = slice(q * n, q * (n + 1))
-        im = slice(q * (m + n), q * (m + n + 1))
-        out[re, re] = matrices[n].real
-        out[re, im] = -matrices[n].imag
-        out[im, re] = matrices[n].imag
-        out[im, im] = matrices[n].real
+    rows = left.shape[0]
+    on_real = left[:, q:q * (m + 1)].reshape(rows, m, q)
+    on_imag = left[:, q * (m + 1):].reshape(rows, m, q)
+    re, im = matrices[1:].real, matrices[1:].imag
+    out = np.empty_like(left)
+    out[:, :q] = left[:, :q] @ matrices[0].real
+    out[:, q:q * (m + 1)] = (np.einsum("rna,nab->rnb", on_real, re)
+                             + np.einsum("rna,nab->rnb", on_imag, im)).reshape(rows, m * q)
+    out[:, q * (m + 1):] = (np.einsum("rna,nab->rnb", on_imag, re)
+                            - np.einsum("rna,nab->rnb", on_real, im)).reshape(rows, m * q)
     return out
 
 
@@ -117,9 +122,7 @@ def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellO
     mean_stiffness, mean_damping = tangent[0][:, 2 * m].real, tangent[1][:, 2 * m].real
     support = (-cell.sleeper_mass * ops.omega[:, None] ** 2 + mean_stiffness
                + 1j * ops.omega[:, None] * mean_damping)                        # (m+1, N)
-    blocks = ops.first + ops.second * support[:, None, :]
-    blocks[0] = blocks[0].real
-    y = -np.linalg.solve(blocks, residual[..., None])[..., 0]
+    y = -solve_blocks(ops, support, residual)
     y[0] = y[0].real
     varying = varying_sleepers(*samples_tangent)
     if varying.size == 0:
@@ -129,11 +132,12 @@ def newton_step(cell, coefficients: np.ndarray, residual: np.ndarray, ops: CellO
     direct[:, diagonal, diagonal] -= (mean_stiffness[varying, None]
                                       + 1j * ops.omega * mean_damping[varying, None])
     per_sleeper = _real_blocks(direct, conjugate)                             # (q, 2m+1, 2m+1)
-    through_rail = np.linalg.solve(blocks, ops.second[:, :, varying])           # (m+1, N, q)
+    through_rail = solve_blocks(ops, support, ops.columns(varying)[1])          # (m+1, N, q)
     q = varying.size
     if q * (2 * m + 1) <= direct_limit:
         rest = _to_pack(per_sleeper)
-        reduced = np.eye(rest.shape[0]) + rest @ _harmonic_map(through_rail[:, varying, :])
+        reduced = _times_harmonic_map(rest, through_rail[:, varying, :])
+        reduced[np.diag_indices_from(reduced)] += 1.0
         forces = _unpack(np.linalg.solve(reduced, rest @ pack_harmonics(y[:, varying])), q)
     else:
         forces = _unpack(_iterative(per_sleeper, through_rail[:, varying, :],
@@ -167,6 +171,6 @@ def _iterative(per_sleeper: np.ndarray, response: np.ndarray, target: np.ndarray
     rhs = tangent_part(target)
     solution, info = gmres(operator, rhs, rtol=GMRES_TOL, atol=0.0, restart=60, maxiter=20)
     if info != 0:
-        dense = np.eye(size * q) + _to_pack(per_sleeper) @ _harmonic_map(response)
+        dense = np.eye(size * q) + _times_harmonic_map(_to_pack(per_sleeper), response)
         solution = np.linalg.solve(dense, _to_pack(per_sleeper) @ target)
     return solution
