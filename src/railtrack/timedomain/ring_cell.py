@@ -67,14 +67,17 @@ class RingLaw:
         shape = np.broadcast_shapes(w.shape, v.shape)
         if len(self.groups) == 1:
             return getattr(self.groups[0][0], method)(w, v)
-        w, v = np.broadcast_to(w, shape), np.broadcast_to(v, shape)
+        # called twice a Newton iteration of every time step: no copies where shapes agree
+        if w.shape != shape:
+            w = np.broadcast_to(w, shape)
+        if v.shape != shape:
+            v = np.broadcast_to(v, shape)
         result = [np.empty(shape) for _ in range(outputs)]
         for law, index in self.groups:
             values = getattr(law, method)(w[..., index], v[..., index])
             values = (values,) if outputs == 1 else values
             for out, value in zip(result, values):
-                out[..., index] = np.broadcast_to(np.asarray(value, dtype=float),
-                                                  shape[:-1] + (index.size,))
+                out[..., index] = value          # a scalar or a column broadcasts here
         return result[0] if outputs == 1 else tuple(result)
 
     def force(self, w, v):
