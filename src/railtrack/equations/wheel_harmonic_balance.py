@@ -115,8 +115,8 @@ def wheel_system(passage: Passage, cell, wheel, harmonics: int, samples: int) ->
     harmonic_phase = np.exp(2j * np.pi * np.outer(np.arange(-m, m + 1), positions) / wagon)
     sleeper_phase = np.exp(1j * omega2[:, None] * (j * span)[None, :] / v)
     offsets = positions[None, :] - positions[:, None]                      # d_k' - d_k
-    between = np.stack([wheel_train_receptance(passage, base * p, offsets) for p in grid]) \
-        if grid.size else np.zeros((0, positions.size, positions.size), dtype=complex)
+    between = wheel_train_receptance(passage, base * grid, offsets) if grid.size \
+        else np.zeros((0, positions.size, positions.size), dtype=complex)
     mobility = -1.0 / (wheel.unsprung_mass * (base * grid) ** 2)
     return WheelSystem(ops, grid, mode, load_gap, wheel_phase, sleeper_shift, basis, weight,
                        harmonic_phase, sleeper_phase,
@@ -150,7 +150,8 @@ def rail_under_wheels(system: WheelSystem, reaction: np.ndarray) -> np.ndarray:
 
 
 def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
-                   coefficients: np.ndarray, forces: np.ndarray, lift: np.ndarray):
+                   coefficients: np.ndarray, forces: np.ndarray, lift: np.ndarray,
+                   foundation: np.ndarray | None = None):
     """Residuals (sleepers (m+1, N) [N], contacts (K, lmax+1) [N]) and the contact histories.
 
     Parameters
@@ -161,11 +162,17 @@ def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
         P_{k,p} at p = grid [N].
     lift : ndarray, shape (K,)
         y_k = mean wheel height minus the rail's mean under it [m].
+    foundation : ndarray, shape (N, m+1), optional
+        F_{j,n}, the laws' force harmonics at `coefficients` where the caller
+        has them (the sleepers' solve): the AFT is then not repeated [N].
     """
     ops, grid, samples = system.ops, system.grid, system.samples
     m = ops.omega.size - 1
-    w, v = _synthesize(coefficients, ops.omega, samples)
-    spectrum = np.fft.rfft(_forces(cell, w, v), axis=-1)[:, :m + 1] / samples
+    if foundation is None:
+        w, v = _synthesize(coefficients, ops.omega, samples)
+        spectrum = np.fft.rfft(_forces(cell, w, v), axis=-1)[:, :m + 1] / samples
+    else:
+        spectrum = foundation
     seat = -cell.sleeper_mass[:, None] * ops.omega**2 * coefficients + spectrum
     sleepers = (np.einsum("nab,bn->na", ops.first, coefficients)
                 + np.einsum("nab,bn->na", ops.second, seat) - ops.load
@@ -192,15 +199,24 @@ def wheel_loads(system: WheelSystem, forces: np.ndarray) -> np.ndarray:
     """
     two = np.concatenate([forces, np.conj(forces)], axis=1)               # (K, 2 lmax)
     by_p = system.load_gap * (system.sleeper_shift @ (system.wheel_phase.T * two))
-    order = np.argsort(system.load_mode, kind="stable")
-    modes, starts = np.unique(system.load_mode[order], return_index=True)
-    by_mode = np.zeros((by_p.shape[0], system.mode_basis.shape[2]), dtype=complex)
-    if order.size:
-        by_mode[:, modes] = np.add.reduceat(by_p[:, order], starts, axis=1)
+    # p = +G i loads mode -i mod N, p = -G i mode i mod N (i = 1..lmax): fold i mod N
+    lmax, n_sl = forces.shape[1], system.mode_basis.shape[2]
+    plus, minus = _fold(by_p[:, :lmax], n_sl), _fold(by_p[:, lmax:], n_sl)
+    by_mode = plus[:, ::-1] + np.roll(minus, 1, axis=1)
     # basis_{n,j,s} = e^{-i omega_n x_j/v} e^{-2 pi i j s/N} / sqrt(N): a DFT over s
     m = by_p.shape[0] - 1
     return (np.conj(system.sleeper_phase[m:]) * np.fft.fft(by_mode, axis=1)
             / np.sqrt(by_mode.shape[1]))
+
+
+def _fold(values: np.ndarray, n: int) -> np.ndarray:
+    """Columns i = 0..l-1 of (W, l) summed by i mod n: (W, n)."""
+    rows, count = values.shape
+    whole = count // n * n
+    out = values[:, :whole].reshape(rows, -1, n).sum(axis=1) if whole \
+        else np.zeros((rows, n), dtype=values.dtype)
+    out[:, :count - whole] += values[:, whole:]
+    return out
 
 
 def profile_harmonics(passage: Passage, profile, grid: np.ndarray, samples: int) -> np.ndarray:

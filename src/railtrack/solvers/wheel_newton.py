@@ -150,7 +150,8 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
                            initial=start, tol=SLEEPERS_TOL)
         c = inner.coefficients[:, m:]
         _, contacts, delta, hertz = wheel_residual(passage, cell, wheel, profile, system,
-                                                   c, forces, y)
+                                                   c, forces, y,
+                                                   inner.foundation_harmonics[:, m:])
         packed = np.concatenate([contacts[:, :1].real, contacts[:, 1:].real,
                                  contacts[:, 1:].imag], axis=1).ravel() / scale
         return packed, delta, hertz, inner
