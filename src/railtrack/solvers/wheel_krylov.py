@@ -24,8 +24,10 @@ from .wheel_track import track_response
 
 __all__ = ["ContactJacobian", "gmres", "hertz_product"]
 
-GMRES_RESTART = 60
-"""Krylov vectors kept before a restart."""
+GMRES_RESTART = 200
+"""Krylov vectors kept before a restart (a wheel off the rail over part of the period
+makes the mean tangent a poor preconditioner: tens of products, which a restart
+would stall)."""
 GMRES_MOST = 600
 """Products at most per step: past it the step is returned as far as it got (Newton's
 line search and residual judge it)."""
@@ -108,42 +110,50 @@ def gmres(apply, precondition, rhs: np.ndarray, tol: float, *, restart: int = GM
     """x with ||apply(x) - rhs|| <= tol ||rhs||, right-preconditioned GMRES.
 
     Right preconditioning keeps the true residual in view (not the
-    preconditioned one).  Returns (x, relative residual, products).
+    preconditioned one); Givens rotations give the residual at every
+    product.  Returns (x, relative residual, products).
     """
     b_norm = float(np.linalg.norm(rhs))
     x = np.zeros_like(rhs)
     if b_norm == 0.0:
         return x, 0.0, 0
-    residual, products = rhs.copy(), 0
-    relative = 1.0
-    while products < most:
+    residual, products, relative = rhs.copy(), 0, 1.0
+    while products < most and relative > tol:
         beta = float(np.linalg.norm(residual))
-        basis = [residual / beta]
-        directions = []
+        basis, directions = [residual / beta], []
         hessenberg = np.zeros((restart + 1, restart))
+        cosines, sines = np.zeros(restart), np.zeros(restart)
+        target = np.zeros(restart + 1)
+        target[0] = beta
         for j in range(restart):
             directions.append(precondition(basis[j]))
             w = apply(directions[j])
             products += 1
-            for i in range(j + 1):                      # modified Gram-Schmidt, twice
-                hessenberg[i, j] = basis[i] @ w
-                w = w - hessenberg[i, j] * basis[i]
-            for i in range(j + 1):
-                again = basis[i] @ w
-                hessenberg[i, j] += again
-                w = w - again * basis[i]
-            hessenberg[j + 1, j] = float(np.linalg.norm(w))
-            target = np.zeros(j + 2)
-            target[0] = beta
-            y, *_ = np.linalg.lstsq(hessenberg[:j + 2, :j + 1], target, rcond=None)
-            relative = float(np.linalg.norm(hessenberg[:j + 2, :j + 1] @ y - target)) / b_norm
-            if relative <= tol or hessenberg[j + 1, j] <= 1e-14 * beta or products >= most:
+            for _ in range(2):                          # modified Gram-Schmidt, twice
+                for i in range(j + 1):
+                    dot = basis[i] @ w
+                    hessenberg[i, j] += dot
+                    w = w - dot * basis[i]
+            norm = float(np.linalg.norm(w))
+            for i in range(j):                          # the earlier rotations
+                upper = hessenberg[i, j]
+                hessenberg[i, j] = cosines[i] * upper + sines[i] * hessenberg[i + 1, j]
+                hessenberg[i + 1, j] = -sines[i] * upper + cosines[i] * hessenberg[i + 1, j]
+            radius = float(np.hypot(hessenberg[j, j], norm))
+            cosines[j], sines[j] = hessenberg[j, j] / radius, norm / radius
+            hessenberg[j, j] = radius
+            target[j + 1] = -sines[j] * target[j]
+            target[j] *= cosines[j]
+            relative = abs(target[j + 1]) / b_norm
+            if relative <= tol or norm <= 1e-14 * beta or products >= most:
                 break
-            basis.append(w / hessenberg[j + 1, j])
+            basis.append(w / norm)
+        size = len(directions)
+        y = np.linalg.solve(np.triu(hessenberg[:size, :size]), target[:size])
         x = x + np.stack(directions, axis=1) @ y
         residual = rhs - apply(x)
         products += 1
         relative = float(np.linalg.norm(residual)) / b_norm
-        if relative <= tol or hessenberg[j + 1, j] <= 1e-14 * beta:
+        if norm <= 1e-14 * beta:
             break
     return x, relative, products

@@ -170,12 +170,15 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
         """Newton's step at x (GMRES), the sleepers' predicted move, and the step over Q."""
         nonlocal operator, products
         c = sleepers.coefficients[:, m:]
-        tangents, _ = tangent_spectrum(cell, c, system.ops, samples)
+        tangents, sampled = tangent_spectrum(cell, c, system.ops, samples)
         mean = tangents[:, :, 2 * m]                                       # (2, N)
         s = 1j * system.ops.omega[:, None]
         support = (cell.sleeper_mass * s**2 + mean[0].real + s * mean[1].real)
-        if operator is None or not np.array_equal(operator.support, support):
-            operator = track_operator(system, cell, support)
+        if operator is None:
+            operator = track_operator(system, cell, support, tangent=(tangents, sampled))
+        elif operator.varying is not None or not np.array_equal(operator.support, support):
+            operator = track_operator(system, cell, support, operator.diagonal,
+                                      (tangents, sampled))
         # the first step solves the contact linearised at the static compression,
         # k_H (delta - delta_0) = P: from the constant forces the wheel does not
         # yet follow the profile, and Hertz's tangent there would be zero in a dip
@@ -196,7 +199,7 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
         products += used
         # the sleepers under the new forces, predicted through the mean-tangent track:
         # exact for linear laws, so that their inner solve only checks its residual
-        moved = sleeper_response(system, operator, forces_of(step)).T
+        moved = sleeper_response(system, operator, forces_of(step))[0].T
         return step, moved, _correction(step, k_w, lmax, np.mean(tangent, axis=1), scale)
 
     correction, fresh = np.inf, False

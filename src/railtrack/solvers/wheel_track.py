@@ -24,6 +24,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..equations.wheel_harmonic_balance import rail_under_wheels, wheel_loads
+from .wheel_sleepers import varying_response, varying_sleepers
 
 __all__ = ["TrackOperator", "track_operator", "track_response", "sleeper_response"]
 
@@ -34,18 +35,29 @@ class TrackOperator(NamedTuple):
     support: np.ndarray     # (m+1, N) [N/m], -M omega^2 + k + i omega eta
     inverse: np.ndarray     # (m+1, N, N) A_n^{-1} [m/N]
     diagonal: np.ndarray    # (l, 2K, 2K) real C restricted to p -> p, [Re, Im] x wheels [m/N]
+    varying: object         # VaryingSleepers or None (`railtrack.solvers.wheel_sleepers`)
 
 
-def track_operator(system, cell, support: np.ndarray) -> TrackOperator:
+def track_operator(system, cell, support: np.ndarray, diagonal: np.ndarray | None = None,
+                   tangent=None) -> TrackOperator:
     """A_n^{-1} and C's blocks p -> p for each sleeper's dynamic stiffness ``support``.
 
     ``support`` (m+1, N) [N/m] is -M omega^2 + k + i omega eta, the laws' mean tangents.
+    ``diagonal``: blocks to keep from an earlier support (they only precondition:
+    a nonlinear sleeper's mean tangent moving between Newton steps barely changes
+    them), instead of building them again.  ``tangent``: the laws' tangent along
+    the orbit (`railtrack.equations.cell_harmonic_balance.tangent_spectrum`), for
+    the exact linearisation of the sleepers whose tangent varies
+    (`railtrack.solvers.wheel_sleepers`); without it, their mean tangent alone.
     """
     ops, lmax, m = system.ops, system.grid.size, system.ops.omega.size - 1
     blocks = ops.first + ops.second * support[:, None, :]
     blocks[0] = blocks[0].real
     inverse = np.linalg.inv(blocks)
-    return TrackOperator(support, inverse, _diagonal(system, support, inverse, lmax, m))
+    if diagonal is None:
+        diagonal = _diagonal(system, support, inverse, lmax, m)
+    varying = None if tangent is None else varying_sleepers(ops, inverse, tangent, support)
+    return TrackOperator(support, inverse, diagonal, varying)
 
 
 def _diagonal(system, support, inverse, lmax, m):
@@ -85,11 +97,16 @@ def _diagonal(system, support, inverse, lmax, m):
                            np.concatenate([by_re.imag, by_im.imag], axis=2)], axis=1)
 
 
-def sleeper_response(system, operator: TrackOperator, forces: np.ndarray) -> np.ndarray:
-    """c_n = A_n^{-1} W_n P, the sleepers' harmonics (m+1, N) under wheel forces (K, l) [m]."""
+def sleeper_response(system, operator: TrackOperator, forces: np.ndarray):
+    """dc = J_c^{-1} W P, the sleepers' harmonics (m+1, N) under wheel forces (K, l) [m].
+
+    Also returns the varying sleepers' force variation (m+1, q), or None.
+    """
     response = (operator.inverse @ wheel_loads(system, forces)[..., None])[..., 0]
     response[0] = response[0].real
-    return response
+    if operator.varying is None:
+        return response, None
+    return varying_response(operator.varying, response)
 
 
 def track_response(system, operator: TrackOperator, forces: np.ndarray) -> np.ndarray:
@@ -98,7 +115,10 @@ def track_response(system, operator: TrackOperator, forces: np.ndarray) -> np.nd
     The rail under the wheel from the sleepers' reactions, less the free
     rail's deflection under the other wheels and the wheel's own mobility.
     """
-    pads = operator.support * sleeper_response(system, operator, forces)   # p = support c
+    moved, varying = sleeper_response(system, operator, forces)
+    pads = operator.support * moved                                        # p = support c
+    if varying is not None:
+        pads[:, operator.varying.index] += varying                         # ... + E c
     reaction = -np.concatenate([np.conj(pads[:0:-1]), pads], axis=0).T     # (N, 2m+1)
     rail = rail_under_wheels(system, reaction)                             # (l, K)
     rail = rail - np.einsum("lkq,ql->lk", system.between_wheels, forces)
