@@ -10,6 +10,7 @@ Hertz's curvature.  The dense Newton step is its solve.
 import numpy as np
 
 import railtrack as rt
+from railtrack.equations.cell_harmonic_balance import tangent_spectrum
 from railtrack.equations.wheel_harmonic_balance import wheel_loads, wheel_residual, wheel_system
 from railtrack.solvers.cell_newton import solve_cell
 from railtrack.solvers.wheel_krylov import ContactJacobian, gmres
@@ -95,3 +96,46 @@ def test_the_preconditioners_blocks_are_the_tracks_response_at_the_harmonic_load
             block = operator.diagonal[harmonic][:, column]
             np.testing.assert_allclose(np.concatenate([moved.real, moved.imag]), block,
                                        rtol=1e-12, atol=1e-12 * np.abs(block).max())
+
+
+def test_the_track_under_the_wheels_is_exact_over_a_sleeper_whose_tangent_varies():
+    # one sleeper of three on a cubic law: its tangent swings over the period, so the
+    # mean-tangent track is only a quasi-Newton model; with the sleeper's variation
+    # (Woodbury) C is the derivative of the residual pipeline, the sleepers solved exactly
+    passage = rt.Passage(rt.Track.paper(), rt.Train.paper(speed=45.0))
+    law = rt.LinearFoundation(20e6, 0.2e6)
+    cubic = rt.CubicFoundation(20e6, 2e14, 0.8, 5000.0)
+    cell = rt.SleeperCell.identical(passage, law, 3).with_sleeper(1, foundation=cubic)
+    wheel, profile = rt.Wheel(600.0), rt.CosineDip(0.3e-3, 0.6, 1.8, centre=0.9)
+    system = wheel_system(passage, cell, wheel, M, SAMPLES)
+    k_w, lmax = len(passage.axle_positions), system.grid.size
+    rng = np.random.default_rng(5)
+    forces = rng.normal(size=(k_w, lmax)) * 2e3 + 1j * rng.normal(size=(k_w, lmax)) * 2e3
+
+    def sleepers(f):
+        return solve_cell(passage, cell, M, samples=SAMPLES, tol=1e-14,
+                          extra_load=wheel_loads(system, f))
+
+    def rail(f):
+        c = sleepers(f).coefficients[:, M:]
+        _, _, delta, _ = wheel_residual(passage, cell, wheel, profile, system, c, f,
+                                        np.zeros(k_w))
+        return (np.fft.rfft(delta, axis=-1) / SAMPLES)[:, system.grid]
+
+    c = sleepers(forces).coefficients[:, M:]
+    tangent = tangent_spectrum(cell, c, system.ops, SAMPLES)
+    assert np.ptp(tangent[1][0, 1]) > 0.2 * np.mean(tangent[1][0, 1])    # it swings
+    mean = tangent[0][:, :, 2 * M].real
+    s = 1j * system.ops.omega[:, None]
+    support = cell.sleeper_mass * s**2 + mean[0] + s * mean[1]
+    exact = track_operator(system, cell, support, tangent=tangent)
+    quasi = track_operator(system, cell, support)
+    for _ in range(3):
+        push = rng.normal(size=(k_w, lmax)) * 5.0 + 1j * rng.normal(size=(k_w, lmax)) * 5.0
+        difference = (rail(forces + push) - rail(forces - push)) / 2.0
+        applied = track_response(system, exact, push)
+        np.testing.assert_allclose(applied, difference, rtol=0,
+                                   atol=1e-6 * np.abs(difference).max())
+        # the mean tangent alone misses by far more: the test can tell them apart
+        assert np.abs(track_response(system, quasi, push) - difference).max() \
+            > 1e-3 * np.abs(difference).max()
