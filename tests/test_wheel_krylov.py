@@ -139,3 +139,32 @@ def test_the_track_under_the_wheels_is_exact_over_a_sleeper_whose_tangent_varies
         # the mean tangent alone misses by far more: the test can tell them apart
         assert np.abs(track_response(system, quasi, push) - difference).max() \
             > 1e-3 * np.abs(difference).max()
+
+
+def test_identical_sleepers_give_c_by_class_blocks_equal_to_the_matrix_free_product():
+    # identical sleepers: C couples p only to p' = +-p mod N G; the blocks and the
+    # matrix-free chain (W P, the sleepers' solve, the rail read by FFT) agree
+    passage = rt.Passage(rt.Track.paper(), rt.Train.paper(speed=45.0))
+    law = rt.LinearFoundation(20e6, 0.2e6)
+    for sleepers, m in ((3, 40), (30, 75)):
+        cell = rt.SleeperCell.identical(passage, law, sleepers)
+        system = wheel_system(passage, cell, rt.Wheel(600.0), m, 512)
+        s = 1j * system.ops.omega[:, None]
+        support = np.broadcast_to(cell.sleeper_mass * s**2 + 20e6 + s * 0.2e6,
+                                  (m + 1, sleepers)).copy()
+        operator = track_operator(system, cell, support)
+        assert operator.blocks is not None
+        rng = np.random.default_rng(sleepers)
+        shape = (2, system.grid.size)
+        forces = rng.normal(size=shape) + 1j * rng.normal(size=shape)
+        blocks = track_response(system, operator, forces)
+        chain = track_response(system, operator._replace(blocks=None), forces)
+        np.testing.assert_allclose(blocks, chain, rtol=0, atol=1e-10 * np.abs(chain).max())
+    # a cell whose sleepers differ couples every class: no blocks
+    cell = rt.SleeperCell.identical(passage, law, 3).with_sleeper(
+        1, foundation=rt.LinearFoundation(5e6, 0.05e6))
+    system = wheel_system(passage, cell, rt.Wheel(600.0), 40, 512)
+    s = 1j * system.ops.omega[:, None]
+    support = cell.sleeper_mass * s**2 + np.array([20e6, 5e6, 20e6]) + s * np.array(
+        [0.2e6, 0.05e6, 0.2e6])
+    assert track_operator(system, cell, support).blocks is None

@@ -24,6 +24,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..equations.wheel_harmonic_balance import rail_under_wheels, wheel_loads
+from .wheel_blocks import apply_blocks, class_blocks
 from .wheel_sleepers import varying_response, varying_sleepers
 
 __all__ = ["TrackOperator", "track_operator", "track_response", "sleeper_response"]
@@ -36,6 +37,7 @@ class TrackOperator(NamedTuple):
     inverse: np.ndarray     # (m+1, N, N) A_n^{-1} [m/N]
     diagonal: np.ndarray    # (l, 2K, 2K) real C restricted to p -> p, [Re, Im] x wheels [m/N]
     varying: object         # VaryingSleepers or None (`railtrack.solvers.wheel_sleepers`)
+    blocks: object          # C's class blocks or None (`railtrack.solvers.wheel_blocks`)
 
 
 def track_operator(system, cell, support: np.ndarray, diagonal: np.ndarray | None = None,
@@ -54,13 +56,28 @@ def track_operator(system, cell, support: np.ndarray, diagonal: np.ndarray | Non
     blocks = ops.first + ops.second * support[:, None, :]
     blocks[0] = blocks[0].real
     inverse = np.linalg.inv(blocks)
-    if diagonal is None:
-        diagonal = _diagonal(system, support, inverse, lmax, m)
     varying = None if tangent is None else varying_sleepers(ops, inverse, tangent, support)
-    return TrackOperator(support, inverse, diagonal, varying)
+    blocks = None
+    if diagonal is None or varying is None:
+        positive, negative = _transfer(system, support, inverse, m)
+        if diagonal is None:
+            diagonal = _diagonal(system, positive, negative, lmax, m)
+        if varying is None and lmax:
+            blocks = class_blocks(system, positive, negative)
+    return TrackOperator(support, inverse, diagonal, varying, blocks)
 
 
-def _diagonal(system, support, inverse, lmax, m):
+def _transfer(system, support, inverse, m):
+    """Q[n, r, s] for n = 0..m and, through conj, n = 0..-m (n = 0 counted once)."""
+    reaction = -support[:, :, None] * (inverse @ system.mode_basis)       # (m+1, N_j, N_s)
+    v_l = system.sleeper_phase
+    positive = np.fft.fft(v_l[m:, :, None] * reaction, axis=1)             # (m+1, r, s)
+    negative = np.fft.fft(v_l[m::-1, :, None] * np.conj(reaction), axis=1)
+    negative[0] = 0.0
+    return positive, negative
+
+
+def _diagonal(system, positive, negative, lmax, m):
     """C's p -> p blocks: harmonic p loads Floquet mode s(+-p), the rail reads index r_p.
 
     With ``Q[n, r, s] = DFT_j(e^{i omega_n x_j/v} (-support_j) (A_n^{-1} basis_s)_j)[r]``,
@@ -71,11 +88,6 @@ def _diagonal(system, support, inverse, lmax, m):
     k_w = system.between_wheels.shape[1]
     if lmax == 0:
         return np.zeros((0, 2 * k_w, 2 * k_w))
-    reaction = -support[:, :, None] * (inverse @ system.mode_basis)       # (m+1, N_j, N_s)
-    v_l = system.sleeper_phase
-    positive = np.fft.fft(v_l[m:, :, None] * reaction, axis=1)             # (m+1, r, s)
-    negative = np.fft.fft(v_l[m::-1, :, None] * np.conj(reaction), axis=1)
-    negative[0] = 0.0                                                      # n = 0 counted once
     reads = system.mode_of_wheel
     s_plus, s_minus = system.load_mode[:lmax], system.load_mode[lmax:]
     factor = system.load_gap[..., None] * system.sleeper_shift[:, None] * system.wheel_phase
@@ -115,6 +127,8 @@ def track_response(system, operator: TrackOperator, forces: np.ndarray) -> np.nd
     The rail under the wheel from the sleepers' reactions, less the free
     rail's deflection under the other wheels and the wheel's own mobility.
     """
+    if operator.blocks is not None and operator.varying is None:
+        return apply_blocks(system, operator.blocks, forces)
     moved, varying = sleeper_response(system, operator, forces)
     pads = operator.support * moved                                        # p = support c
     if varying is not None:
