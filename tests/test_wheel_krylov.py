@@ -14,7 +14,7 @@ from railtrack.equations.cell_harmonic_balance import tangent_spectrum
 from railtrack.equations.wheel_harmonic_balance import wheel_loads, wheel_residual, wheel_system
 from railtrack.solvers.cell_newton import solve_cell
 from railtrack.solvers.wheel_krylov import ContactJacobian, gmres
-from railtrack.solvers.wheel_track import track_operator, track_response
+from railtrack.solvers.wheel_track import _diagonal, _transfer, track_operator, track_response
 
 M, SAMPLES = 40, 256
 
@@ -168,3 +168,14 @@ def test_identical_sleepers_give_c_by_class_blocks_equal_to_the_matrix_free_prod
     support = cell.sleeper_mass * s**2 + np.array([20e6, 5e6, 20e6]) + s * np.array(
         [0.2e6, 0.05e6, 0.2e6])
     assert track_operator(system, cell, support).blocks is None
+
+
+def test_the_preconditioners_blocks_read_off_the_class_blocks_are_the_built_ones():
+    passage = rt.Passage(rt.Track.paper(), rt.Train.paper(speed=45.0))
+    cell = rt.SleeperCell.identical(passage, rt.LinearFoundation(20e6, 0.2e6), 30)
+    system = wheel_system(passage, cell, rt.Wheel(600.0), 75, 512)
+    s = 1j * system.ops.omega[:, None]
+    support = np.broadcast_to(cell.sleeper_mass * s**2 + 20e6 + s * 0.2e6, (76, 30)).copy()
+    operator = track_operator(system, cell, support)
+    built = _diagonal(system, *_transfer(system, support, operator.inverse, 75), 75, 75)
+    np.testing.assert_allclose(operator.diagonal, built, rtol=0, atol=1e-12 * np.abs(built).max())

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["class_blocks", "apply_blocks", "SPARSE_TOL"]
+__all__ = ["class_blocks", "apply_blocks", "blocks_diagonal", "SPARSE_TOL"]
 
 SPARSE_TOL = 1e-13
 """Transfer below this fraction of its largest entry is round-off (identical sleepers)."""
@@ -79,5 +79,20 @@ def apply_blocks(system, blocks, forces: np.ndarray) -> np.ndarray:
     for rows, cols, matrix, conjugate in blocks:
         load = by_harmonic[cols].ravel()
         rail[rows] += (matrix @ (np.conj(load) if conjugate else load)).reshape(-1, k_w)
-    rail = rail - np.einsum("lkq,ql->lk", system.between_wheels, forces)
+    rail = rail - (system.between_wheels @ by_harmonic[..., None])[..., 0]
     return rail.T - system.wheel_mobility * forces
+
+
+def blocks_diagonal(system, blocks) -> np.ndarray:
+    """C's p -> p blocks (l, 2K, 2K) real, [Re, Im] x wheels, read off the class blocks."""
+    lmax, k_w = system.grid.size, system.between_wheels.shape[1]
+    with_u = np.zeros((lmax, k_w, k_w), dtype=complex)
+    with_conj = np.zeros_like(with_u)
+    for rows, cols, matrix, conjugate in blocks:
+        common, at_row, at_col = np.intersect1d(rows, cols, return_indices=True)
+        entries = matrix.reshape(rows.size, k_w, cols.size, k_w)[at_row, :, at_col, :]
+        (with_conj if conjugate else with_u)[common] += entries
+    own = system.between_wheels + system.wheel_mobility[:, None, None] * np.eye(k_w)
+    by_re, by_im = with_u + with_conj - own, 1j * (with_u - with_conj - own)
+    return np.concatenate([np.concatenate([by_re.real, by_im.real], axis=2),
+                           np.concatenate([by_re.imag, by_im.imag], axis=2)], axis=1)

@@ -24,7 +24,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..equations.wheel_harmonic_balance import rail_under_wheels, wheel_loads
-from .wheel_blocks import apply_blocks, class_blocks
+from .wheel_blocks import apply_blocks, blocks_diagonal, class_blocks
 from .wheel_sleepers import varying_response, varying_sleepers
 
 __all__ = ["TrackOperator", "track_operator", "track_response", "sleeper_response"]
@@ -60,10 +60,11 @@ def track_operator(system, cell, support: np.ndarray, diagonal: np.ndarray | Non
     blocks = None
     if diagonal is None or varying is None:
         positive, negative = _transfer(system, support, inverse, m)
-        if diagonal is None:
-            diagonal = _diagonal(system, positive, negative, lmax, m)
         if varying is None and lmax:
             blocks = class_blocks(system, positive, negative)
+        if diagonal is None:
+            diagonal = _diagonal(system, positive, negative, lmax, m) if blocks is None \
+                else blocks_diagonal(system, blocks)
     return TrackOperator(support, inverse, diagonal, varying, blocks)
 
 
@@ -135,5 +136,5 @@ def track_response(system, operator: TrackOperator, forces: np.ndarray) -> np.nd
         pads[:, operator.varying.index] += varying                         # ... + E c
     reaction = -np.concatenate([np.conj(pads[:0:-1]), pads], axis=0).T     # (N, 2m+1)
     rail = rail_under_wheels(system, reaction)                             # (l, K)
-    rail = rail - np.einsum("lkq,ql->lk", system.between_wheels, forces)
+    rail = rail - (system.between_wheels @ forces.T[..., None])[..., 0]
     return rail.T - system.wheel_mobility * forces
