@@ -11,12 +11,15 @@ Its Jacobian is ``K C - I`` (the book's chapter 13): K the Hertz tangent
 1.5 C_H delta^{1/2} on the AFT samples and C the contact's compression per
 unit P and y: the wheel's own receptance 1/(m_w omega_p^2) less the track's
 receptance under the moving wheels, the linear map P -> W P -> c ->
-reactions -> rail under the wheels (each sleeper's law replaced by its mean
-tangent: exact for linear laws, a quasi-Newton step for the others).  Both
-are applied matrix-free and the step is found by preconditioned GMRES
-(`railtrack.solvers.wheel_krylov`, issue 28): the track is factorised once
-per support (`railtrack.solvers.wheel_track.track_operator`, once per solve
-for linear laws), nothing of size (K (2l+1))^2 is formed.  The reported
+reactions -> rail under the wheels, linearised exactly: each sleeper's mean
+tangent, and for the sleepers whose tangent varies (a hanging sleeper that
+touches) its variation by Woodbury (`railtrack.solvers.wheel_sleepers`).
+Both are applied without forming anything of size (K (2l+1))^2 and the step
+is found by preconditioned GMRES (`railtrack.solvers.wheel_krylov`, issue
+28): the track is factorised once per support
+(`railtrack.solvers.wheel_track.track_operator`, once per solve for linear
+laws; on identical sleepers C is kept as its sparse class blocks,
+`railtrack.solvers.wheel_blocks`).  The reported
 residual is the full one, sleepers and contacts.
 """
 
