@@ -61,9 +61,12 @@ class WheelSystem(NamedTuple):
     ops: object            # CellOperators at omega_n, n = 0..m
     grid: np.ndarray       # wheel harmonics p = G l, l = 1..lmax
     load_mode: np.ndarray  # (2 lmax,): the Floquet mode s = -p/G mod N that p = +grid, -grid loads
-    load_factor: np.ndarray  # (m+1, 2 lmax, K): W_{n,j,k,p} = basis_{n,j,s(p)} load_factor_{n,p,k}
+    load_gap: np.ndarray   # (m+1, 2 lmax): -4 sqrt(N) (L/H) gap(a_n, kappa_{p-n} L)
+    wheel_phase: np.ndarray  # (2 lmax, K): e^{2 pi i p d_k / H}, p = +grid, -grid
+    sleeper_shift: np.ndarray  # (m+1, K): e^{-2 pi i n d_k / H}, n = 0..m
     mode_basis: np.ndarray   # (m+1, N_j, N_s): e^{-i j (omega_n L/v + 2 pi s/N)} / sqrt(N)
-    under_wheel: np.ndarray    # (lmax, 2m+1, K): e^{i kappa d_k} / (EI Lambda (kappa^4 - k_n^4))
+    under_weight: np.ndarray   # (lmax, 2m+1): 1 / (EI Lambda (kappa^4 - k_n^4)), n = -m..m
+    harmonic_phase: np.ndarray  # (2m+1, K): e^{2 pi i n d_k / H}, n = -m..m
     sleeper_phase: np.ndarray  # (2m+1, N): e^{i omega_n x_j / v}
     mode_of_wheel: np.ndarray  # (lmax,): r_l = p_l / G mod N
     between_wheels: np.ndarray  # (lmax, K, K): U_p(d_k' - d_k)
@@ -95,8 +98,11 @@ def wheel_system(passage: Passage, cell, wheel, harmonics: int, samples: int) ->
     kappa = 2 * np.pi * (signed[None, :] - np.arange(m + 1)[:, None]) / wagon   # (m+1, P)
     gap = contact_gap(a[:, None], kappa * span)
     mode = (-signed // groups) % n_sl                                      # s = -p/G mod N
-    factor = (-4.0 * np.sqrt(n_sl) * span / wagon * gap[..., None]
-              * np.exp(1j * kappa[..., None] * positions))                # (m+1, P, K)
+    # e^{i kappa_{p-n} d_k} = e^{2 pi i p d_k/H} e^{-2 pi i n d_k/H}: W P and the rail under
+    # the wheels become products of small matrices
+    load_gap = -4.0 * np.sqrt(n_sl) * span / wagon * gap                   # (m+1, P)
+    wheel_phase = np.exp(2j * np.pi * np.outer(signed, positions) / wagon)
+    sleeper_shift = np.exp(-2j * np.pi * np.outer(np.arange(m + 1), positions) / wagon)
     shift = np.exp(-2j * np.pi * np.outer(j, j) / n_sl)                    # e^{-2 pi i j s / N}
     basis = (np.exp(-1j * omega[:, None] * (j * span)[None, :] / v)[:, :, None]
              * shift[None] / np.sqrt(n_sl))                                # (m+1, j, s)
@@ -106,13 +112,14 @@ def wheel_system(passage: Passage, cell, wheel, harmonics: int, samples: int) ->
     kap = omega2[None, :] / v - 2 * np.pi * (grid[:, None] / groups) / cell_length   # (L, 2m+1)
     with np.errstate(divide="ignore", invalid="ignore"):
         weight = 1.0 / (ei * cell_length * (kap**4 - kb4[None, :]))
-    under_wheel = weight[..., None] * np.exp(1j * kap[..., None] * positions)
+    harmonic_phase = np.exp(2j * np.pi * np.outer(np.arange(-m, m + 1), positions) / wagon)
     sleeper_phase = np.exp(1j * omega2[:, None] * (j * span)[None, :] / v)
     offsets = positions[None, :] - positions[:, None]                      # d_k' - d_k
-    between = np.stack([wheel_train_receptance(passage, base * p, offsets) for p in grid]) \
-        if grid.size else np.zeros((0, positions.size, positions.size), dtype=complex)
+    between = wheel_train_receptance(passage, base * grid, offsets) if grid.size \
+        else np.zeros((0, positions.size, positions.size), dtype=complex)
     mobility = -1.0 / (wheel.unsprung_mass * (base * grid) ** 2)
-    return WheelSystem(ops, grid, mode, factor, basis, under_wheel, sleeper_phase,
+    return WheelSystem(ops, grid, mode, load_gap, wheel_phase, sleeper_shift, basis, weight,
+                       harmonic_phase, sleeper_phase,
                        (grid // groups) % n_sl, between, mobility, int(samples),
                        np.asarray(sleeper_weight, dtype=float))
 
@@ -124,24 +131,27 @@ def rail_under_wheels(system: WheelSystem, reaction: np.ndarray) -> np.ndarray:
     kappa = omega_n/v - 2 pi (p/G)/Lambda: with x_j = jL the sum over j is a
     discrete Fourier transform of ``e^{i omega_n x_j / v} R_{j,n}`` at index p/G mod N.
 
+    With kappa d_k split as 2 pi (n - p) d_k / H, the sum over n is a product
+    of a (lmax, 2m+1) and a (2m+1, K) matrix.
+
     Parameters
     ----------
-    reaction : ndarray, shape (N, 2m+1, ...)
-        R_{j,n}, n = -m..m [N]; trailing axes are carried along.
+    reaction : ndarray, shape (N, 2m+1)
+        R_{j,n}, n = -m..m [N].
 
     Returns
     -------
-    ndarray, shape (lmax, K, ...)
+    ndarray, shape (lmax, K)
     """
-    phased = reaction * system.sleeper_phase.T.reshape(system.sleeper_phase.T.shape
-                                                       + (1,) * (reaction.ndim - 2))
-    spectrum = np.fft.fft(phased, axis=0)                                  # (N, 2m+1, ...)
-    read = spectrum[system.mode_of_wheel]                                  # (lmax, 2m+1, ...)
-    return np.einsum("lnk,ln...->lk...", system.under_wheel, read)
+    spectrum = np.fft.fft(reaction * system.sleeper_phase.T, axis=0)      # (N, 2m+1)
+    read = system.under_weight * spectrum[system.mode_of_wheel]           # (lmax, 2m+1)
+    lmax = system.grid.size
+    return np.conj(system.wheel_phase[:lmax]) * (read @ system.harmonic_phase)
 
 
 def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
-                   coefficients: np.ndarray, forces: np.ndarray, lift: np.ndarray):
+                   coefficients: np.ndarray, forces: np.ndarray, lift: np.ndarray,
+                   foundation: np.ndarray | None = None):
     """Residuals (sleepers (m+1, N) [N], contacts (K, lmax+1) [N]) and the contact histories.
 
     Parameters
@@ -152,11 +162,17 @@ def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
         P_{k,p} at p = grid [N].
     lift : ndarray, shape (K,)
         y_k = mean wheel height minus the rail's mean under it [m].
+    foundation : ndarray, shape (N, m+1), optional
+        F_{j,n}, the laws' force harmonics at `coefficients` where the caller
+        has them (the sleepers' solve): the AFT is then not repeated [N].
     """
     ops, grid, samples = system.ops, system.grid, system.samples
     m = ops.omega.size - 1
-    w, v = _synthesize(coefficients, ops.omega, samples)
-    spectrum = np.fft.rfft(_forces(cell, w, v), axis=-1)[:, :m + 1] / samples
+    if foundation is None:
+        w, v = _synthesize(coefficients, ops.omega, samples)
+        spectrum = np.fft.rfft(_forces(cell, w, v), axis=-1)[:, :m + 1] / samples
+    else:
+        spectrum = foundation
     seat = -cell.sleeper_mass[:, None] * ops.omega**2 * coefficients + spectrum
     sleepers = (np.einsum("nab,bn->na", ops.first, coefficients)
                 + np.einsum("nab,bn->na", ops.second, seat) - ops.load
@@ -182,12 +198,25 @@ def wheel_loads(system: WheelSystem, forces: np.ndarray) -> np.ndarray:
     mapped to the sleepers.
     """
     two = np.concatenate([forces, np.conj(forces)], axis=1)               # (K, 2 lmax)
-    by_p = np.einsum("npk,kp->np", system.load_factor, two)
-    n_sl = system.mode_basis.shape[2]
-    by_mode = np.zeros((by_p.shape[0], n_sl), dtype=complex)
-    for s in range(n_sl):
-        by_mode[:, s] = by_p[:, system.load_mode == s].sum(axis=1)
-    return np.einsum("njs,ns->nj", system.mode_basis, by_mode)
+    by_p = system.load_gap * (system.sleeper_shift @ (system.wheel_phase.T * two))
+    # p = +G i loads mode -i mod N, p = -G i mode i mod N (i = 1..lmax): fold i mod N
+    lmax, n_sl = forces.shape[1], system.mode_basis.shape[2]
+    plus, minus = _fold(by_p[:, :lmax], n_sl), _fold(by_p[:, lmax:], n_sl)
+    by_mode = plus[:, ::-1] + np.roll(minus, 1, axis=1)
+    # basis_{n,j,s} = e^{-i omega_n x_j/v} e^{-2 pi i j s/N} / sqrt(N): a DFT over s
+    m = by_p.shape[0] - 1
+    return (np.conj(system.sleeper_phase[m:]) * np.fft.fft(by_mode, axis=1)
+            / np.sqrt(by_mode.shape[1]))
+
+
+def _fold(values: np.ndarray, n: int) -> np.ndarray:
+    """Columns i = 0..l-1 of (W, l) summed by i mod n: (W, n)."""
+    rows, count = values.shape
+    whole = count // n * n
+    out = values[:, :whole].reshape(rows, -1, n).sum(axis=1) if whole \
+        else np.zeros((rows, n), dtype=values.dtype)
+    out[:, :count - whole] += values[:, whole:]
+    return out
 
 
 def profile_harmonics(passage: Passage, profile, grid: np.ndarray, samples: int) -> np.ndarray:

@@ -44,11 +44,21 @@ __all__ = ["wheel_train_receptance", "wheel_train_receptance_lattice_sum",
            "wheel_train_at_fixed_point"]
 
 
-def _roots(passage: Passage, omega: float) -> np.ndarray:
-    """The four roots kappa of P(kappa) = EI kappa^4 - rho S (omega - kappa v)^2 [1/m]."""
+def _roots(passage: Passage, omega: np.ndarray) -> np.ndarray:
+    """The four roots kappa of P(kappa) = EI kappa^4 - rho S (omega - kappa v)^2 [1/m].
+
+    For an array of omega (shape W): shape W + (4,), the eigenvalues of the
+    monic quartic's companion matrices (as `np.roots`, for all omega at once).
+    """
     ei, rho_s, v = (float(passage.rail_bending_stiffness), float(passage.rail_linear_mass),
                     float(passage.speed))
-    return np.roots([ei, 0.0, -rho_s * v**2, 2.0 * rho_s * omega * v, -rho_s * omega**2])
+    omega = np.asarray(omega, dtype=float)
+    companion = np.zeros(omega.shape + (4, 4))
+    companion[..., 1, 0] = companion[..., 2, 1] = companion[..., 3, 2] = 1.0
+    companion[..., 0, 1] = rho_s * v**2 / ei
+    companion[..., 0, 2] = -2.0 * rho_s * omega * v / ei
+    companion[..., 0, 3] = rho_s * omega**2 / ei
+    return np.linalg.eigvals(companion)
 
 
 def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
@@ -59,8 +69,9 @@ def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
     ----------
     passage : Passage
         Scalar rail (EI, rho S), wagon length H and speed v.
-    omega : float
-        omega_p != 0 [rad/s], the frequency of the wheels' forces.
+    omega : float or array_like
+        omega_p != 0 [rad/s], the frequency of the wheels' forces; an array
+        gives one answer per omega (shape omega.shape + offset.shape).
     offset : array_like
         Delta = d - d' [m], how far the point read (x = vt - d') is ahead of
         the loaded wheel (x = vt - d), taken modulo H.
@@ -71,8 +82,9 @@ def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
     Returns
     -------
     ndarray
-        Complex, shaped like `offset`: the rail's displacement there per unit
-        upward force of every wagon's wheel, at the frequency omega.
+        Complex, shaped like `offset` (for a scalar omega): the rail's
+        displacement there per unit upward force of every wagon's wheel, at
+        the frequency omega.
 
     Examples
     --------
@@ -82,23 +94,25 @@ def wheel_train_receptance(passage: Passage, omega: float, offset: ArrayLike,
     ...                  wheel_train_receptance_lattice_sum(p, w, [0.0, 3.0]), rtol=1e-6))
     True
     """
-    if omega == 0:
+    omega = np.asarray(omega, dtype=float)
+    if np.any(omega == 0):
         raise ValueError("omega must be non-zero: at omega = 0 the free rail's rigid lift "
                          "(r = 0) is infinite; the mean is carried by the sleepers")
     wagon = float(passage.wagon_length)
     delta = np.mod(np.asarray(offset, dtype=float), wagon)
-    roots = _roots(passage, float(omega))
     ei, rho_s, v = (float(passage.rail_bending_stiffness), float(passage.rail_linear_mass),
                     float(passage.speed))
-    derivative = 4 * ei * roots**3 + 2.0 * rho_s * v * (omega - roots * v)
-    total = np.zeros(delta.shape, dtype=complex)
-    for a, slope in zip(roots, derivative):
-        if a.imag >= 0:      # |e^{iaH}| <= 1: the form as written
-            term = -1j * np.exp(1j * a * delta) / (np.exp(1j * a * wagon) - 1.0)
-        else:                # |e^{iaH}| > 1: divide through by e^{iaH}
-            term = -1j * np.exp(1j * a * (delta - wagon)) / (1.0 - np.exp(-1j * a * wagon))
-        total += term * (1j * a) ** order / slope
-    return total
+    roots = _roots(passage, omega).reshape(omega.shape + (1,) * delta.ndim + (4,))
+    derivative = 4 * ei * roots**3 + 2.0 * rho_s * v * (omega.reshape(
+        omega.shape + (1,) * (delta.ndim + 1)) - roots * v)
+    at = delta[..., None]
+    upper = roots.imag >= 0
+    # |e^{iaH}| <= 1: the form as written; |e^{iaH}| > 1: divided through by e^{iaH}
+    # (each root in its own branch; the other branch sees a harmless stand-in)
+    up, down = np.where(upper, roots, 1j), np.where(upper, -1j, roots)
+    term = np.where(upper, -1j * np.exp(1j * up * at) / (np.exp(1j * up * wagon) - 1.0),
+                    -1j * np.exp(1j * down * (at - wagon)) / (1.0 - np.exp(-1j * down * wagon)))
+    return np.sum(term * (1j * roots) ** order / derivative, axis=-1)
 
 
 def wheel_train_receptance_lattice_sum(passage: Passage, omega: float, offset: ArrayLike,

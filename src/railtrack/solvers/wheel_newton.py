@@ -8,14 +8,19 @@ are the constant-force cell with one more load, W P
 (`railtrack.solvers.cell_newton.solve_cell`, exact); what remains is the
 contact residual B(P, y) = [C_H max(delta, 0)^{3/2}]_p - P_p (- Q_k at p = 0).
 Its Jacobian is ``K C - I`` (the book's chapter 13): K the Hertz tangent
-1.5 C_H delta^{1/2} by AFT (analysis, times the samples, times synthesis)
-and C the contact's compression per unit P and y (`track_under_wheels`):
-the wheel's own receptance 1/(m_w omega_p^2) less the track's receptance
-under the moving wheels, built once per step from the linear map
-P -> W P -> c -> reactions -> rail under the wheels (each sleeper's law
-replaced by its mean tangent: exact for linear laws, a quasi-Newton step
-for the others).  The residual reported is the
-full one, sleepers and contacts.
+1.5 C_H delta^{1/2} on the AFT samples and C the contact's compression per
+unit P and y: the wheel's own receptance 1/(m_w omega_p^2) less the track's
+receptance under the moving wheels, the linear map P -> W P -> c ->
+reactions -> rail under the wheels, linearised exactly: each sleeper's mean
+tangent, and for the sleepers whose tangent varies (a hanging sleeper that
+touches) its variation by Woodbury (`railtrack.solvers.wheel_sleepers`).
+Both are applied without forming anything of size (K (2l+1))^2 and the step
+is found by preconditioned GMRES (`railtrack.solvers.wheel_krylov`, issue
+28): the track is factorised once per support
+(`railtrack.solvers.wheel_track.track_operator`, once per solve for linear
+laws; on identical sleepers C is kept as its sparse class blocks,
+`railtrack.solvers.wheel_blocks`).  The reported
+residual is the full one, sleepers and contacts.
 """
 
 from __future__ import annotations
@@ -35,9 +40,10 @@ from ..equations.wheel_harmonic_balance import (
 )
 from ..model.passage import Passage
 from .cell_newton import solve_cell
-from .wheel_track import track_under_wheels
+from .wheel_krylov import ContactJacobian, gmres
+from .wheel_track import sleeper_response, track_operator
 
-__all__ = ["WheelNewton", "solve_wheels", "track_under_wheels"]
+__all__ = ["WheelNewton", "solve_wheels"]
 
 SLEEPERS_TOL = 1e-13
 """The sleepers' inner solve stops at this relative residual: at 1e-10 a warm start passed
@@ -46,6 +52,8 @@ contact residual, which the rail's near-rigid response amplifies at low speed, s
 above 1e-9 at 1-3 m/s."""
 SLEEPERS_SETTLED = 1e-10
 """... and counts as solved at this one (the cell path's tol) where round-off stops it."""
+STEP_TOL = 1e-4
+"""GMRES solves Newton's step to this relative residual at most (tighter near tol)."""
 FLOOR_RESIDUAL = 1e-6
 """A stalled contact residual is taken as a round-off floor only below this [-]."""
 
@@ -74,34 +82,6 @@ def _correction(step: np.ndarray, wheels: int, lmax: int, stiffness: np.ndarray,
     forces, lift = _unpack(step, wheels, lmax)
     return float(max(np.max(np.abs(forces), initial=0.0),
                      np.max(np.abs(stiffness * lift), initial=0.0)) / scale)
-
-
-def _hertz_tangent(wheel, delta: np.ndarray, grid: np.ndarray) -> np.ndarray:
-    """d[C_H max(delta, 0)^{3/2}]_packed / d delta_packed per wheel, (K, 2l+1, 2l+1) [N/m].
-
-    With the tangent's harmonics k_n (two-sided, k_{-n} = conj k_n), harmonic
-    p of k delta is ``sum_q k_{p-q} delta_q``: for delta_q = a_q + i b_q it
-    takes ``k_{p-q} + k_{p+q}`` per a_q and ``i (k_{p-q} - k_{p+q})`` per b_q.
-    """
-    spectrum = np.fft.rfft(wheel.contact_stiffness(delta), axis=-1) / delta.shape[-1]
-    lmax = grid.size
-    step = int(grid[0]) if lmax else 1
-    index = np.arange(-2 * lmax, 2 * lmax + 1)
-    one_sided = spectrum[:, np.abs(index) * step]
-    k = np.where(index >= 0, one_sided, np.conj(one_sided))              # (K, 4l+1)
-    p = np.arange(1, lmax + 1)
-    minus = k[:, 2 * lmax + p[:, None] - p[None, :]]                      # k_{p-q}
-    plus = k[:, 2 * lmax + p[:, None] + p[None, :]]                       # k_{p+q}
-    by_a, by_b = minus + plus, 1j * (minus - plus)
-    at_p = k[:, 2 * lmax + p]
-    out = np.empty((delta.shape[0], 2 * lmax + 1, 2 * lmax + 1))
-    out[:, 0, 0] = k[:, 2 * lmax].real
-    out[:, 0, 1:lmax + 1] = 2 * at_p.real
-    out[:, 0, lmax + 1:] = 2 * at_p.imag
-    out[:, 1:lmax + 1, 0], out[:, lmax + 1:, 0] = at_p.real, at_p.imag
-    out[:, 1:lmax + 1, 1:lmax + 1], out[:, lmax + 1:, 1:lmax + 1] = by_a.real, by_a.imag
-    out[:, 1:lmax + 1, lmax + 1:], out[:, lmax + 1:, lmax + 1:] = by_b.real, by_b.imag
-    return out
 
 
 def _packed_harmonics(samples: np.ndarray, grid: np.ndarray) -> np.ndarray:
@@ -139,10 +119,12 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
     tol : float
         Converged once the contact residual over the largest Q is <= tol and
         the sleepers' residual over the train's load <= `SLEEPERS_SETTLED`;
-        or, where the contact residual stops falling above tol (its round-off
-        floor: at 1-3 m/s the rail's near-rigid response amplifies the
-        sleepers' round-off, 1e-9 of Q), once Newton's correction there, the
-        distance to the solution it predicts, is <= tol Q.
+        or, where the contact residual stays above tol at its round-off floor
+        (at 1-3 m/s the rail's near-rigid response amplifies the sleepers'
+        round-off, 1e-9 of Q), once Newton's correction there, the distance
+        to the solution it predicts, is <= tol Q: whether the line search
+        stopped or the steps ran out (issue 28: a residual wandering at its
+        floor used the whole budget and was reported not converged).
     start : (ndarray (K, l'), ndarray (K,)), optional
         P_{k,p} at the first l' wheel harmonics and y_k to start from (a
         coarser m's solution); default: the static contact.
@@ -171,14 +153,15 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
                            initial=start, tol=SLEEPERS_TOL)
         c = inner.coefficients[:, m:]
         _, contacts, delta, hertz = wheel_residual(passage, cell, wheel, profile, system,
-                                                   c, forces, y)
+                                                   c, forces, y,
+                                                   inner.foundation_harmonics[:, m:])
         packed = np.concatenate([contacts[:, :1].real, contacts[:, 1:].real,
                                  contacts[:, 1:].imag], axis=1).ravel() / scale
         return packed, delta, hertz, inner
 
     current, delta, hertz, sleepers = evaluate(x, None)
     norm, steps, message = float(np.linalg.norm(current)), 0, ""
-    cached = None
+    products, operator = 0, None
 
     def forces_of(vector):
         return _unpack(vector, k_w, lmax)[0]
@@ -186,66 +169,77 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
     def settled(inner):
         return bool(inner.converged or inner.residual <= SLEEPERS_SETTLED)
 
-    correction = np.inf
-    while (norm > tol or not settled(sleepers)) and steps < max_iterations:
-        steps += 1
+    def direction(linear_start):
+        """Newton's step at x (GMRES), the sleepers' predicted move, and the step over Q."""
+        nonlocal operator, products
         c = sleepers.coefficients[:, m:]
-        tangents, _ = tangent_spectrum(cell, c, system.ops, samples)
+        tangents, sampled = tangent_spectrum(cell, c, system.ops, samples)
         mean = tangents[:, :, 2 * m]                                       # (2, N)
         s = 1j * system.ops.omega[:, None]
         support = (cell.sleeper_mass * s**2 + mean[0].real + s * mean[1].real)
-        if cached is None or not np.array_equal(cached[0], support):
-            cached = (support, track_under_wheels(system, cell, support))
-        receptance = cached[1]
+        if operator is None:
+            operator = track_operator(system, cell, support, tangent=(tangents, sampled))
+        elif operator.varying is not None or not np.array_equal(operator.support, support):
+            operator = track_operator(system, cell, support, operator.diagonal,
+                                      (tangents, sampled))
         # the first step solves the contact linearised at the static compression,
         # k_H (delta - delta_0) = P: from the constant forces the wheel does not
         # yet follow the profile, and Hertz's tangent there would be zero in a dip
-        linear_start = steps == 1 and start is None
-        if linear_start:
-            static = np.array([wheel.static_compression(q) for q in loads])
-            hertz_tangent = _hertz_tangent(wheel, np.broadcast_to(static[:, None], delta.shape),
-                                           system.grid)
-        else:
-            hertz_tangent = _hertz_tangent(wheel, delta, system.grid)
-        size = 2 * lmax + 1
-        jacobian = np.zeros((k_w * size, k_w * size))
-        for k in range(k_w):
-            rows = slice(k * size, (k + 1) * size)
-            jacobian[rows] = hertz_tangent[k] @ receptance[rows]
-            own = slice(k * size + 1, (k + 1) * size)
-            jacobian[own, own] -= np.eye(2 * lmax)
         target = current
         if linear_start:
-            stiffness = hertz_tangent[:, 0, 0]
-            linear = stiffness[:, None] * (delta - static[:, None])
+            static = np.array([wheel.static_compression(q) for q in loads])
+            tangent = np.broadcast_to(wheel.contact_stiffness(static)[:, None], delta.shape)
+            linear = tangent * (delta - static[:, None])
             target = (np.concatenate([_packed_harmonics(linear, system.grid) - np.concatenate(
                 [loads[:, None] * 0.0, forces_of(x).real, forces_of(x).imag], axis=1)],
                 axis=1).ravel() / scale)
-        step = np.linalg.solve(jacobian / scale, -target)
-        correction = _correction(step, k_w, lmax, hertz_tangent[:, 0, 0], scale)
+        else:
+            tangent = wheel.contact_stiffness(delta)
+        jacobian = ContactJacobian(system, operator, tangent, scale)
+        # inexact Newton: the step's own residual well below the next one's aim
+        rtol = min(STEP_TOL, max(1e-12, 0.1 * tol / max(norm, 1e-300)))
+        step, _, used = gmres(jacobian.apply, jacobian.precondition, -target, rtol)
+        products += used
+        # the sleepers under the new forces, predicted through the mean-tangent track:
+        # exact for linear laws, so that their inner solve only checks its residual
+        moved = sleeper_response(system, operator, forces_of(step))[0].T
+        return step, moved, _correction(step, k_w, lmax, np.mean(tangent, axis=1), scale)
+
+    correction, fresh = np.inf, False
+    while (norm > tol or not settled(sleepers)) and steps < max_iterations:
+        steps += 1
+        linear_start = steps == 1 and start is None
+        step, moved, correction = direction(linear_start)
+        c = sleepers.coefficients[:, m:]
+        fresh = True                     # correction is Newton's at the current x ...
         for _ in range(30):
-            trial = evaluate(x + step, c)
+            trial = evaluate(x + step, c + moved)
             trial_norm = float(np.linalg.norm(trial[0]))
             if trial_norm < norm or linear_start:
                 break
-            step = 0.5 * step
+            step, moved = 0.5 * step, 0.5 * moved
         else:
             message = f"no decrease of the contact residual at Newton step {steps}"
             break
         x = x + step
         current, delta, hertz, sleepers = trial
-        norm = trial_norm
-    floor = bool(message and correction <= tol and norm <= FLOOR_RESIDUAL)
+        norm, fresh = trial_norm, False  # ... until a step is taken
+    # a residual above tol that stopped falling, or whose budget ran out, at its round-off
+    # floor: Newton's correction there, the distance to the solution it predicts, decides
+    if tol < norm <= FLOOR_RESIDUAL and settled(sleepers) and not fresh:
+        correction = direction(False)[2]
+    floor = bool(tol < norm <= FLOOR_RESIDUAL and correction <= tol)
     converged = bool((norm <= tol or floor) and settled(sleepers))
     if settled(sleepers) and not sleepers.converged:
         sleepers = replace(sleepers, converged=True)
     if floor:
-        message = (f"the contact residual stops falling at {norm:.1e} (its round-off floor), "
-                   f"where Newton's correction is {correction:.1e} Q <= tol")
+        message = (f"converged at the contact residual's round-off floor: it stays at "
+                   f"{norm:.1e}, where Newton's correction is {correction:.1e} Q <= tol")
     forces, y = _unpack(x, k_w, lmax)
     times = np.arange(samples) * period / samples
     summary = (f"contact residual {norm:.2e} {'<=' if norm <= tol else '>'} tol {tol:.1e} "
-               f"after {steps} steps; sleepers: {sleepers.message}")
+               f"after {steps} steps ({products} GMRES products); "
+               f"sleepers: {sleepers.message}")
     # delta's own harmonics, without the profile and the lift: rail under the wheel - z
     moving = delta - compression(passage, profile, system, np.zeros_like(forces), y)
     harmonics = (np.fft.rfft(moving, axis=-1) / samples)[:, system.grid]

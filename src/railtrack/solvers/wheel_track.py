@@ -1,83 +1,140 @@
-"""C, the compression under the wheels per unit wheel force: the Jacobian's linear part.
+"""C, the compression under the wheels per unit wheel force, applied matrix-free (issue 28).
 
 Used by Newton's method with wheels (`railtrack.solvers.wheel_newton`):
 the wheel's own receptance 1/(m_w omega_p^2) less the track's receptance
-under the moving wheels, from the linear map P -> W P -> c -> reactions ->
-rail under the wheels, each sleeper's law replaced by its mean tangent.
+under the moving wheels, the linear map P -> W P -> c -> reactions -> rail
+under the wheels, each sleeper's law replaced by its mean tangent (its
+dynamic stiffness ``support``).  Nothing of size (K (2l+1))^2 is formed: per
+sleeper harmonic n the N x N block ``A_n = K1_n + K2_n diag(support_n)`` is
+inverted once per support (`track_operator`) and every product C x is then
+W P (per Floquet mode), m + 1 products with A_n^{-1}, and the FFT over the
+sleepers of `railtrack.equations.wheel_harmonic_balance.rail_under_wheels`:
+O((m+1) (N^2 + l K)) a product.
+
+Newton's step is found by GMRES (`railtrack.solvers.wheel_krylov`) with a
+preconditioner diagonal in the wheel harmonics: C's blocks p -> p (between
+the K wheels), exact, from the transfer through the sleepers read at the
+one Floquet mode and Fourier index that harmonic p loads and reads.
 """
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
-__all__ = ["track_under_wheels"]
+from ..equations.wheel_harmonic_balance import rail_under_wheels, wheel_loads
+from .wheel_blocks import apply_blocks, blocks_diagonal, class_blocks
+from .wheel_sleepers import varying_response, varying_sleepers
+
+__all__ = ["TrackOperator", "track_operator", "track_response", "sleeper_response"]
 
 
-def track_under_wheels(system, cell, support: np.ndarray) -> np.ndarray:
-    """C: the harmonics of delta per unit wheel force and lift, real (K(2l+1), K(2l+1)) [m/N].
+class TrackOperator(NamedTuple):
+    """The track under the wheels for one support; see `track_operator`."""
 
-    Per wheel the packing is ``[y or delta_0, Re x_1..l, Im x_1..l]``.
-    ``support`` (m+1, N) [N/m] is each sleeper's dynamic stiffness
-    -M omega^2 + k + i omega eta (the laws' mean tangents).
+    support: np.ndarray     # (m+1, N) [N/m], -M omega^2 + k + i omega eta
+    inverse: np.ndarray     # (m+1, N, N) A_n^{-1} [m/N]
+    diagonal: np.ndarray    # (l, 2K, 2K) real C restricted to p -> p, [Re, Im] x wheels [m/N]
+    varying: object         # VaryingSleepers or None (`railtrack.solvers.wheel_sleepers`)
+    blocks: object          # C's class blocks or None (`railtrack.solvers.wheel_blocks`)
 
-    A wheel harmonic p loads one Floquet mode s of sleeper harmonic n, and
-    the rail under wheel harmonic p_l reads one discrete Fourier index r_l of
-    the reactions, so C is a sum over n of products through
-    ``Q[n, s, r] = DFT_j(e^{i omega_n x_j/v} (-support_j) (A_n^{-1} basis_s)_j)[r]``,
-    computed once (N x N per harmonic).  For identical sleepers Q is zero
-    unless r = -s (mod N): only those blocks are summed.
+
+def track_operator(system, cell, support: np.ndarray, diagonal: np.ndarray | None = None,
+                   tangent=None) -> TrackOperator:
+    """A_n^{-1} and C's blocks p -> p for each sleeper's dynamic stiffness ``support``.
+
+    ``support`` (m+1, N) [N/m] is -M omega^2 + k + i omega eta, the laws' mean tangents.
+    ``diagonal``: blocks to keep from an earlier support (they only precondition:
+    a nonlinear sleeper's mean tangent moving between Newton steps barely changes
+    them), instead of building them again.  ``tangent``: the laws' tangent along
+    the orbit (`railtrack.equations.cell_harmonic_balance.tangent_spectrum`), for
+    the exact linearisation of the sleepers whose tangent varies
+    (`railtrack.solvers.wheel_sleepers`); without it, their mean tangent alone.
     """
     ops, lmax, m = system.ops, system.grid.size, system.ops.omega.size - 1
-    k_w = system.between_wheels.shape[1]
-    v_l = system.sleeper_phase                                             # (2m+1, N)
-    solved = np.linalg.solve(ops.first + ops.second * support[:, None, :], system.mode_basis)
-    reaction = -support[:, :, None] * solved                               # (m+1, N_j, N_s)
+    blocks = ops.first + ops.second * support[:, None, :]
+    blocks[0] = blocks[0].real
+    inverse = np.linalg.inv(blocks)
+    varying = None if tangent is None else varying_sleepers(ops, inverse, tangent, support)
+    blocks = None
+    if diagonal is None or varying is None:
+        positive, negative = _transfer(system, support, inverse, m)
+        if varying is None and lmax:
+            blocks = class_blocks(system, positive, negative)
+        if diagonal is None:
+            diagonal = _diagonal(system, positive, negative, lmax, m) if blocks is None \
+                else blocks_diagonal(system, blocks)
+    return TrackOperator(support, inverse, diagonal, varying, blocks)
+
+
+def _transfer(system, support, inverse, m):
+    """Q[n, r, s] for n = 0..m and, through conj, n = 0..-m (n = 0 counted once)."""
+    reaction = -support[:, :, None] * (inverse @ system.mode_basis)       # (m+1, N_j, N_s)
+    v_l = system.sleeper_phase
     positive = np.fft.fft(v_l[m:, :, None] * reaction, axis=1)             # (m+1, r, s)
     negative = np.fft.fft(v_l[m::-1, :, None] * np.conj(reaction), axis=1)
-    factor = system.load_factor                                            # (m+1, 2l, K)
-    plus, minus = factor[:, :lmax], factor[:, lmax:]
+    negative[0] = 0.0
+    return positive, negative
+
+
+def _diagonal(system, positive, negative, lmax, m):
+    """C's p -> p blocks: harmonic p loads Floquet mode s(+-p), the rail reads index r_p.
+
+    With ``Q[n, r, s] = DFT_j(e^{i omega_n x_j/v} (-support_j) (A_n^{-1} basis_s)_j)[r]``,
+    the coefficient of u = P_{k',p} in delta_{k,p} is
+    ``sum_n under[p, n, k] Q[n, r_p, s(p)] factor[n, p, k']`` over n = -m..m
+    (n < 0 through conj), and likewise for conj(u) through s(-p).
+    """
+    k_w = system.between_wheels.shape[1]
+    if lmax == 0:
+        return np.zeros((0, 2 * k_w, 2 * k_w))
+    reads = system.mode_of_wheel
     s_plus, s_minus = system.load_mode[:lmax], system.load_mode[lmax:]
-    upper = system.under_wheel[:, m:]                                      # (l, m+1, K)
-    lower = system.under_wheel[:, m::-1]                                   # n = 0, -1, .. -m
-    tail = np.ones(m + 1)
-    tail[0] = 0.0                                                          # n = 0 counted once
-    # coefficients of u and conj(u) for a force u at +p, conj(u) at -p
-    with_u = (_through(upper, positive, s_plus, plus, system.mode_of_wheel)
-              + _through(lower, negative * tail[:, None, None], s_minus, np.conj(minus),
-                         system.mode_of_wheel))
-    with_conj = (_through(upper, positive, s_minus, minus, system.mode_of_wheel)
-                 + _through(lower, negative * tail[:, None, None], s_plus, np.conj(plus),
-                            system.mode_of_wheel))
-    by_re, by_im = with_u + with_conj, 1j * (with_u - with_conj)            # (l, K, l', K')
-    own = (system.between_wheels[:, :, :, None] * np.eye(lmax)[:, None, None, :]
-           + (system.wheel_mobility[:, None, None, None] * np.eye(k_w)[None, :, :, None]
-              * np.eye(lmax)[:, None, None, :]))                           # (l, K, K', l')
-    own = np.transpose(own, (0, 1, 3, 2))                                  # (l, K, l', K')
-    by_re, by_im = by_re - own, by_im - 1j * own
-    size = 2 * lmax + 1
-    out = np.zeros((k_w, size, k_w, size))
-    out[:, 1:lmax + 1, :, 1:lmax + 1] = np.transpose(by_re.real, (1, 0, 3, 2))
-    out[:, lmax + 1:, :, 1:lmax + 1] = np.transpose(by_re.imag, (1, 0, 3, 2))
-    out[:, 1:lmax + 1, :, lmax + 1:] = np.transpose(by_im.real, (1, 0, 3, 2))
-    out[:, lmax + 1:, :, lmax + 1:] = np.transpose(by_im.imag, (1, 0, 3, 2))
-    for k in range(k_w):
-        out[k, 0, k, 0] = 1.0
-    return out.reshape(k_w * size, k_w * size)
+    factor = system.load_gap[..., None] * system.sleeper_shift[:, None] * system.wheel_phase
+    plus, minus = factor[:, :lmax], factor[:, lmax:]                       # (m+1, l, K)
+    under = (system.under_weight[..., None] * system.harmonic_phase
+             * np.conj(system.wheel_phase[:lmax, None]))                   # (l, 2m+1, K)
+    upper, lower = under[:, m:], under[:, m::-1]
+
+    def through(under, transfer, modes, factor):
+        return np.einsum("lnk,nl,nlj->lkj", under, transfer[:, reads, modes], factor)
+
+    with_u = through(upper, positive, s_plus, plus) + through(lower, negative, s_minus,
+                                                              np.conj(minus))
+    with_conj = through(upper, positive, s_minus, minus) + through(lower, negative, s_plus,
+                                                                   np.conj(plus))
+    own = system.between_wheels + system.wheel_mobility[:, None, None] * np.eye(k_w)
+    by_re, by_im = with_u + with_conj - own, 1j * (with_u - with_conj - own)
+    return np.concatenate([np.concatenate([by_re.real, by_im.real], axis=2),
+                           np.concatenate([by_re.imag, by_im.imag], axis=2)], axis=1)
 
 
-def _through(under, transfer, modes, factor, reads):
-    """sum_n under[l, n, k] transfer[n, r_l, s_q] factor[n, q, k'], block by block (r, s)."""
-    lmax, k_w = under.shape[0], under.shape[2]
-    out = np.zeros((lmax, k_w, factor.shape[1], factor.shape[2]), dtype=complex)
-    largest = float(np.max(np.abs(transfer))) if transfer.size else 0.0
-    for r in np.unique(reads):
-        rows = np.flatnonzero(reads == r)
-        for s in np.unique(modes):
-            line = transfer[:, r, s]
-            if not np.any(np.abs(line) > 1e-13 * largest):
-                continue                       # round-off: the blocks identical sleepers skip
-            cols = np.flatnonzero(modes == s)
-            block = line[:, None, None] * factor[:, cols, :]               # (W, q, K')
-            out[np.ix_(rows, np.arange(k_w), cols, np.arange(factor.shape[2]))] = \
-                np.tensordot(under[rows], block, axes=([1], [0]))
-    return out
+def sleeper_response(system, operator: TrackOperator, forces: np.ndarray):
+    """dc = J_c^{-1} W P, the sleepers' harmonics (m+1, N) under wheel forces (K, l) [m].
+
+    Also returns the varying sleepers' force variation (m+1, q), or None.
+    """
+    response = (operator.inverse @ wheel_loads(system, forces)[..., None])[..., 0]
+    response[0] = response[0].real
+    if operator.varying is None:
+        return response, None
+    return varying_response(operator.varying, response)
+
+
+def track_response(system, operator: TrackOperator, forces: np.ndarray) -> np.ndarray:
+    """C's force part: delta's harmonics p = grid (K, l) [m] under P_{k,p} (K, l) [N].
+
+    The rail under the wheel from the sleepers' reactions, less the free
+    rail's deflection under the other wheels and the wheel's own mobility.
+    """
+    if operator.blocks is not None and operator.varying is None:
+        return apply_blocks(system, operator.blocks, forces)
+    moved, varying = sleeper_response(system, operator, forces)
+    pads = operator.support * moved                                        # p = support c
+    if varying is not None:
+        pads[:, operator.varying.index] += varying                         # ... + E c
+    reaction = -np.concatenate([np.conj(pads[:0:-1]), pads], axis=0).T     # (N, 2m+1)
+    rail = rail_under_wheels(system, reaction)                             # (l, K)
+    rail = rail - (system.between_wheels @ forces.T[..., None])[..., 0]
+    return rail.T - system.wheel_mobility * forces
