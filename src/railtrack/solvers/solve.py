@@ -52,6 +52,7 @@ from .speed_path import not_converged_advice, speed_path
 from ..model.passage import Passage
 from ..model.track import Track
 from ..model.train import Train
+from .threads import one_blas_thread
 from .truncation import estimate_of
 
 __all__ = ["solve", "METHODS", "DEFAULT_ACCURACY", "WARN_TRUNCATION"]
@@ -89,6 +90,7 @@ METHODS = {"newton": _newton, "fixed-point": _fixed_point, "analytic": _analytic
 """Method name -> function(system, tol, max_iterations, split, initial) -> SolverOutcome."""
 
 
+@one_blas_thread
 def solve(
     track: Track,
     train: Train,

@@ -4,21 +4,43 @@ A stack of thousands of 30 x 30 solves gains nothing from a second BLAS
 thread (each LAPACK call is microseconds long), and when the BLAS threads
 outnumber the free cores they wait on each other: on a busy 2-core machine
 one study ran ten times slower with OpenBLAS's default threads than with
-one.  `blas_threads` limits BLAS (OpenBLAS, MKL, BLIS) to `limit` threads
-inside a ``with`` block and restores the caller's setting after it, so a
-user's default setup is not the slow one; work that scales (many draws)
-is spread over processes or threads by an executor instead
-(`railtrack.solvers.chunk_map`).
+one, and a cell of 30 sleepers, the dipped weld with wheels and a cell of 100
+took 1.3 s, 4.2 s and 2.3 s on the default two threads against 0.33 s, 1.0 s
+and 1.0 s on one (issue 28).  `blas_threads` limits BLAS (OpenBLAS, MKL,
+BLIS) to `limit` threads inside a ``with`` block and restores the caller's
+setting after it, so a user's default setup is not the slow one; work that
+scales (many draws) is spread over processes or threads by an executor
+instead (`railtrack.solvers.chunk_map`).  `one_blas_thread` puts the public
+entry points (`railtrack.solve`, the Floquet multipliers, the studies) under it.
+
+threadpoolctl's ``threadpool_limits`` scans the loaded libraries at every
+call (about 1 ms, as long as the paper's whole solve); one controller, made
+at first use, switches them in about 10 microseconds.
 """
 
 from __future__ import annotations
 
-from threadpoolctl import threadpool_limits
+import functools
+from collections.abc import Callable
+from typing import TypeVar
 
-__all__ = ["blas_threads"]
+from threadpoolctl import ThreadpoolController
+
+__all__ = ["blas_threads", "one_blas_thread"]
+
+_CONTROLLER: list[ThreadpoolController] = []
+
+F = TypeVar("F", bound=Callable)
 
 
-def blas_threads(limit: int = 1) -> threadpool_limits:
+def _controller() -> ThreadpoolController:
+    # made once numpy and scipy have loaded their BLAS, i.e. at the first solve
+    if not _CONTROLLER:
+        _CONTROLLER.append(ThreadpoolController())
+    return _CONTROLLER[0]
+
+
+def blas_threads(limit: int = 1):
     """A context manager: BLAS runs on at most `limit` threads inside it.
 
     Examples
@@ -29,4 +51,24 @@ def blas_threads(limit: int = 1) -> threadpool_limits:
     >>> x.tolist()
     [1.0, 1.0, 1.0]
     """
-    return threadpool_limits(limits=int(limit), user_api="blas")
+    return _controller().limit(limits=int(limit), user_api="blas")
+
+
+def one_blas_thread(function: F) -> F:
+    """Decorate a public entry point so that it runs under ``blas_threads(1)``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> @one_blas_thread
+    ... def threads():
+    ...     from threadpoolctl import threadpool_info
+    ...     return {i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"}
+    >>> threads() <= {1}
+    True
+    """
+    @functools.wraps(function)
+    def limited(*args, **kwargs):
+        with blas_threads(1):
+            return function(*args, **kwargs)
+    return limited  # type: ignore[return-value]

@@ -36,6 +36,7 @@ from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..solvers.solution import ConvergenceWarning, TruncationWarning
 from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION, solve
+from ..solvers.threads import one_blas_thread
 from ..solvers.truncation import (MAX_AUTO_HARMONICS, TAIL_FACTOR, estimate_of,
                                   grown_harmonics, predict_harmonics, track_spectrum)
 
@@ -87,6 +88,7 @@ def _fold(problem, u, tangent, ds, slope, tol, max_steps):
     return found
 
 
+@one_blas_thread
 def continuation(track, train, foundation, parameter: str = "speed", start=None, stop=None,
                  harmonics: int | str = "auto", step: float | None = None, max_points: int = 400,
                  tol: float = 1e-10, *, accuracy: float | None = None,

@@ -29,6 +29,7 @@ from ..solvers.solution import ConvergenceWarning
 from ..timedomain.simulation import simulate_time_domain
 from ..model.track import Track
 from ..model.train import Train
+from ..solvers.threads import one_blas_thread
 
 __all__ = ["SpeedRamp", "speed_ramp"]
 
@@ -75,6 +76,7 @@ def _interharmonic(result) -> float:
                            history.shape[1]).interharmonic_fraction
 
 
+@one_blas_thread
 def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span: int = 8,
                steps_per_period: int = 2400, *, tol: float = 1e-6, max_periods: int = 100,
                start="static", warn_step_error: float | None = None) -> SpeedRamp:

@@ -54,6 +54,7 @@ from .td_solution import TimeDomainSolution
 from ..model.track import Track
 from ..model.train import Train
 from ..solvers.solution import ConvergenceWarning
+from ..solvers.threads import one_blas_thread
 
 __all__ = [
     "TimeDomainSolution",
@@ -89,6 +90,7 @@ def _require_count(name: str, value: Any) -> int:
     return int(value)
 
 
+@one_blas_thread
 def simulate_time_domain(
     track: Track,
     train: Train,
