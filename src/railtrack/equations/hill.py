@@ -77,9 +77,13 @@ def _receptance_parts(passage: Passage, s: np.ndarray, q: np.ndarray):
     ratio = passage.rail_linear_mass / passage.rail_bending_stiffness
     a = (-ratio * s**2 + 0j) ** 0.25 * passage.sleeper_spacing  # any fourth root will do
     f1, f2 = _bending_functions(a)
-    # differences of cosines as products of sines: no cancellation at small a or q
-    cos_gap = -2.0 * np.sin(0.5 * (a + q)) * np.sin(0.5 * (a - q))
-    cosh_gap = 2.0 * (np.sinh(0.5 * a) ** 2 + np.sin(0.5 * q) ** 2)
+    # differences of cosines as products of sines: no cancellation at small a or q;
+    # sin(x +- y) expanded so that the functions of a (of s alone) are taken once
+    # for every phase q broadcast against them
+    half_a, half_q = 0.5 * a, 0.5 * q
+    sin_a, cos_a, sin_q, cos_q = np.sin(half_a), np.cos(half_a), np.sin(half_q), np.cos(half_q)
+    cos_gap = -2.0 * (sin_a * cos_q + cos_a * sin_q) * (sin_a * cos_q - cos_a * sin_q)
+    cosh_gap = 2.0 * (np.sinh(half_a) ** 2 + sin_q**2)
     return f1 + np.cos(q) * f2, cos_gap * cosh_gap
 
 
@@ -210,11 +214,14 @@ def hill_matrix(passage: Passage, toeplitz: np.ndarray, exponent: ArrayLike,
     omega = passage.fundamental_frequency
     s = np.asarray(exponent, dtype=complex)[..., None] + 1j * omega * k
     q = k * omega * passage.sleeper_spacing / passage.speed - np.asarray(theta)[..., None]
-    s = np.broadcast_to(s, np.broadcast_shapes(s.shape, q.shape))
-    matrix = s[..., None, :] * toeplitz[1]
+    # D(s, q) of s and q unbroadcast: the rail's bending functions depend on s alone,
+    # shared by all the phases of a contour's stack
+    stiffness = condensed_stiffness(passage, s, q)
+    shape = np.broadcast_shapes(s.shape, q.shape)
+    matrix = np.broadcast_to(s, shape)[..., None, :] * toeplitz[1]
     matrix += toeplitz[0]
     diagonal = np.arange(2 * m + 1)
-    matrix[..., diagonal, diagonal] += condensed_stiffness(passage, s, q)
+    matrix[..., diagonal, diagonal] += stiffness
     return matrix
 
 

@@ -45,6 +45,7 @@ VERDICT_POINTS = 16
 """Contour points per phase for the verdicts of `check_branch` (see `_floquet_branch`)."""
 
 
+
 def segments(branch: Branch) -> list[range]:
     """Index ranges of the branch between its folds, in order.
 
@@ -213,7 +214,7 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
     # as 48 do at every point of chapter 10's fold branch (tests/test_floquet.py);
     # the full set of multipliers needs `floquet`'s default 24.
     options.setdefault("points", VERDICT_POINTS)
-    checks = {i: floquet(branch.solution(i), theta, **options) for i in range(len(branch))}
+    checks = _continued_checks(branch, theta, options)
     stable = np.array([checks[i].stable for i in range(len(branch))], dtype=object)
     verdicts = [checks[i].verdict for i in range(len(branch))]
     dominant = np.array([checks[i].dominant for i in range(len(branch))])
@@ -248,6 +249,38 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
                                changes=tuple(changes))
 
 
+def _continued_checks(branch: Branch, theta, options) -> dict:
+    """The `Floquet` of every point: searched in full, or continued from its neighbour.
+
+    Each point's multipliers are continued by Newton from the previous
+    point's (`railtrack.floquet` with ``guess=``, which searches in full
+    where the continuation cannot be trusted, `railtrack.solvers.floquet_track`).  Where the verdict changes next to a continued point,
+    both points are searched in full, and if a full search disagrees with a
+    continued verdict, the points before it are searched in full back to
+    one that agrees: every change the branch lists lies between two points
+    searched in full.
+    """
+    checks: dict = {}
+
+    def full(i: int):
+        return floquet(branch.solution(i), theta, **options)
+
+    for i in range(len(branch)):
+        checks[i] = full(i) if i == 0 else floquet(branch.solution(i), theta,
+                                                    guess=checks[i - 1], **options)
+        if i == 0 or checks[i].verdict == checks[i - 1].verdict:
+            continue
+        if checks[i].continued:
+            checks[i] = full(i)
+        k = i - 1
+        while k >= 0 and checks[k].continued:
+            verdict, checks[k] = checks[k].verdict, full(k)
+            if checks[k].verdict == verdict:
+                break
+            k -= 1
+    return checks
+
+
 def _solved(branch: Branch, value: float, guess: np.ndarray):
     """The branch's problem solved at parameter `value` from `guess`, or None."""
     problem = replaced(branch.track, branch.train, branch.foundation, branch.parameter, value)
@@ -274,12 +307,14 @@ def _locate(branch: Branch, ends, theta, resolution, options):
         trial = _solved(branch, value, (1 - weight) * ca + weight * cb)
         if trial is None:
             break
-        result = floquet(trial, theta, **options)
+        # only the dominant multiplier's modulus places the change: continued from the
+        # nearer end of the bracket, whose two ends were searched in full
+        result = floquet(trial, theta, guess=left if weight < 0.5 else right, **options)
         f = np.log(abs(result.dominant))
         if (f > 0) == (fa > 0):
-            a, fa, ca = value, f, trial.coefficients[branch.harmonics:]
+            a, fa, ca, left = value, f, trial.coefficients[branch.harmonics:], result
         else:
-            b, fb, cb = value, f, trial.coefficients[branch.harmonics:]
+            b, fb, cb, right = value, f, trial.coefficients[branch.harmonics:], result
         if f > 0:
             unstable = result
     return a + fa / (fa - fb) * (b - a), unstable
