@@ -39,10 +39,10 @@ import numpy as np
 
 from ..equations.aft_jacobian import tangent_harmonics
 from ..equations.harmonic_balance import harmonic_system
-from ..equations.hill import bloch_phases, hill_derivative, hill_matrix, tangent_toeplitz
+from ..equations.hill import bloch_phases, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
 from .floquet_assembly import TAIL_LIMIT, _distinct, floquet_result
-from .floquet_track import continue_exponents
+from .floquet_track import CONTINUED_SHARE, continue_exponents, newton_parts
 from .floquet_verdict import MIN_POINTS, NEUTRAL, Floquet
 from .solution import Solution
 
@@ -223,24 +223,14 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     if candidates:
         z0, p0, phase, base, mirrored = (np.array(column) for column in zip(*candidates))
 
-        def matrix(z, rows):
-            return hill_matrix(passage, toeplitz, z / period, phase[rows])
-
-        def slope(z, p, rows):
-            return hill_derivative(passage, toeplitz, z / period, phase[rows], p) / period
         # Newton on the candidates in groups, so that the bordered matrices stay under
         # MEMORY_BYTES; each candidate's iteration is its own, so grouping changes nothing.
         chunk = max(1, int(MEMORY_BYTES // (16 * 4 * (2 * m + 2) ** 2)))
         parts = []
         for start in range(0, z0.size, chunk):
             rows = np.arange(start, min(start + chunk, z0.size))
-
-            def local(z, which, rows=rows):
-                return matrix(z, rows[which])
-
-            def local_slope(z, p, which, rows=rows):
-                return slope(z, p, rows[which])
-            parts.append(polish(local, z0[rows], p0[rows], local_slope))
+            matrix, slope = newton_parts(passage, toeplitz, period, phase[rows])
+            parts.append(polish(matrix, z0[rows], p0[rows], slope))
         values, vectors, residuals = (np.concatenate(part) for part in zip(*parts))
         # A real negative multiplier sits on the strip's edge, Im z = +-pi, where
         # round-off decides the side: accept both edges, fold them onto (-pi, pi].
@@ -284,15 +274,20 @@ def _continued(guess: Floquet, passage, toeplitz: np.ndarray, period: float, bas
     cut = min(m, m_guess)
     vectors[:, m - cut:m + cut + 1] = guess.vectors[:, m_guess - cut:m_guess + cut + 1]
     # each exponent's base phase and whether its family is mirrored (then only the
-    # phases up to pi are continued; the others are their conjugates)
-    keep, base_of, mirror_of = [], [], []
+    # phases up to pi are continued; the others are their conjugates); those far below
+    # the largest are left to the ceiling
+    size = np.abs(guess.multipliers)
+    families = [(base, bloch_phases(passage, base)) for base in bases]
+    families = [(base, family, _mirrored(family)) for base, family in families]
+    keep, base_of, mirror_of, dropped = [], [], [], 0.0
     for i, phase in enumerate(guess.phases):
-        for base in bases:
-            family = bloch_phases(passage, base)
+        for base, family, mirrored in families:
             if np.min(np.abs(np.mod(phase - family + np.pi, 2 * np.pi) - np.pi)) < 1e-9:
-                mirrored = _mirrored(family)
                 if not mirrored or phase <= np.pi + 1e-12:
-                    keep.append(i), base_of.append(base), mirror_of.append(mirrored)
+                    if size[i] >= CONTINUED_SHARE * size.max():
+                        keep.append(i), base_of.append(base), mirror_of.append(mirrored)
+                    else:
+                        dropped = max(dropped, float(size[i]))
                 break
     keep = np.array(keep, dtype=int)
     if keep.size == 0:
@@ -301,7 +296,7 @@ def _continued(guess: Floquet, passage, toeplitz: np.ndarray, period: float, bas
         passage, toeplitz, period, guess.exponents[keep] * guess.period, vectors[keep],
         guess.phases[keep])
     lost = np.abs(guess.multipliers[keep][~kept])
-    ceiling = max(guess.ceiling, float(lost.max(initial=0.0))) + move
+    ceiling = max(guess.ceiling, dropped, float(lost.max(initial=0.0))) + move
     low, high = box
     values = values.real + 1j * (np.pi - np.mod(np.pi - values.imag, 2 * np.pi))
     tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)

@@ -84,9 +84,15 @@ def floquet_result(found: list, bases: np.ndarray, count: int, m: int, period: f
 
 def _distinct(found: list) -> list:
     """Drop repeats: one multiplier found twice at one phase (z and z + 2 pi i at the edges)."""
+    if not found:
+        return []
+    mu = np.exp(np.array([item[0] for item in found], dtype=complex))
+    phase = np.array([item[1] for item in found], dtype=float)
+    same = (np.abs(mu[:, None] - mu[None, :]) < 1e-7 * np.maximum(1.0, np.abs(mu))[:, None]) \
+        & (np.abs(phase[:, None] - phase[None, :]) < 1e-9)
     kept: list = []
-    for item in found:
-        if not any(abs(np.exp(item[0]) - np.exp(k[0])) < 1e-7 * max(1.0, abs(np.exp(item[0])))
-                   and abs(item[1] - k[1]) < 1e-9 for k in kept):
-            kept.append(item)
-    return kept
+    for i in range(len(found)):
+        # a repeat of one kept before it (the first of each group is kept)
+        if not any(same[i, j] for j in kept):
+            kept.append(i)
+    return [found[i] for i in kept]

@@ -1,11 +1,11 @@
 """Floquet exponents continued from a neighbouring solution by Newton's method.
 
 Along a branch or a speed sweep, the multipliers of one point are close to
-those of the next.  `continue_exponents` takes every exponent of a previous
-result (`railtrack.floquet`), with its eigenvector, as the start of Newton's
-method on Hill's matrix of the new solution (`polish`): a few bordered solves
-per exponent, instead of a contour of 16-24 solves per Bloch phase over the
-whole box.
+those of the next.  `continue_exponents` takes the exponents of a previous
+result (`railtrack.floquet`) down to `CONTINUED_SHARE` of its largest |mu|,
+with their eigenvectors, as the start of Newton's method on Hill's matrix of
+the new solution (`polish`): a few bordered solves per exponent, instead of
+a contour of 16-24 solves per Bloch phase over the whole box.
 
 What it can and cannot say.  A multiplier it finds outside the unit circle,
 resolved and with a small residual, is an eigenpair of Hill's matrix as much
@@ -14,12 +14,15 @@ the exponents move continuously with the solution.  A full search found
 every multiplier in its box, so those it did not find lay below
 min_multiplier (or above the box, which the a-priori estimate rules out).
 The `ceiling` bounds the multipliers not continued: min_multiplier after a
-full search, then at each continued point the larger of the last ceiling and
-the start |mu| of any exponent lost on the way (not converged, or onto
-another one), plus the largest move |Delta mu| of a continued multiplier.
-If the spectrum moves no faster than its continued members, every multiplier
-not continued lies at |mu| <= ceiling; while that is below 1 the continued
-ones decide the verdict, beyond it the caller searches in full again.  So a
+full search, then at each continued point the largest of the last ceiling,
+the |mu| of those left below `CONTINUED_SHARE` and the start |mu| of any
+exponent lost on the way (not converged, or onto another one), plus the
+largest move |Delta mu| of a continued multiplier.  If the spectrum moves no
+faster than its continued members, every multiplier not continued lies at
+|mu| <= ceiling; while that is below the largest continued one the listed
+dominant multiplier is the dominant one, and while it is below 1 the
+continued ones decide the verdict; beyond either, the caller searches in
+full again.  So a
 continued "stable" means: no multiplier outside the unit circle among those
 continued from a full search that proved stability, and the spectrum moved
 too little since for another to have reached it.  `Floquet.continued` marks
@@ -30,11 +33,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..equations.hill import hill_derivative, hill_matrix
+from ..equations.hill import hill_matrix_slope
 from ..model.passage import Passage
 from .contour import polish
 
-__all__ = ["continue_exponents"]
+__all__ = ["CONTINUED_SHARE", "continue_exponents", "newton_parts"]
+
+CONTINUED_SHARE = 0.5
+"""Multipliers below this share of the largest |mu| are not continued: the ceiling covers them [-]."""
 TRACK_RESIDUAL = 1e-6
 """Largest relative residual ||H p|| / ||H|| of a continued exponent (as `RESIDUAL_LIMIT`)."""
 
@@ -71,12 +77,7 @@ def continue_exponents(passage: Passage, toeplitz: np.ndarray, period: float,
     move : float
         The largest |Delta mu| of a kept exponent [-].
     """
-    def matrix(z, rows):
-        return hill_matrix(passage, toeplitz, z / period, phases[rows])
-
-    def slope(z, p, rows):
-        return hill_derivative(passage, toeplitz, z / period, phases[rows], p) / period
-
+    matrix, slope = newton_parts(passage, toeplitz, period, phases)
     values, vectors, residuals = polish(matrix, start, vectors, slope)
     same_phase = np.abs(phases[:, None] - phases[None, :]) < 1e-9
     close = np.abs(np.exp(values[:, None]) - np.exp(values[None, :])) < 1e-7 * np.maximum(
@@ -85,3 +86,24 @@ def continue_exponents(passage: Passage, toeplitz: np.ndarray, period: float,
     # on mu, not on z: near the bottom of the box a multiplier moves far in log mu
     move = float(np.max(np.abs(np.exp(values) - np.exp(start))[kept], initial=0.0))
     return values, vectors, kept, move
+
+
+def newton_parts(passage: Passage, toeplitz: np.ndarray, period: float, phases: np.ndarray):
+    """`matrix(z, rows)` and `derivative(z, p, rows)` of Hill's matrix in z = lambda T for `polish`.
+
+    Newton asks for both at the same z in each step: the derivative's
+    diagonal is kept from the matrix's evaluation (`hill_matrix_slope`)
+    instead of evaluating the rail's functions twice more.
+    """
+    kept: dict = {}
+
+    def matrix(z, rows):
+        values, slope = hill_matrix_slope(passage, toeplitz, z / period, phases[rows])
+        kept.update(z=z, rows=rows, slope=slope)
+        return values
+
+    def derivative(z, p, rows):
+        if kept.get("z") is not z or kept.get("rows") is not rows:
+            matrix(z, rows)
+        return (kept["slope"] * p + p @ toeplitz[1].T) / period
+    return matrix, derivative
