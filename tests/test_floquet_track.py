@@ -102,3 +102,24 @@ def test_check_branch_continues_and_agrees_with_the_full_search(across_the_torus
     assert change.kind == "complex" and not change.gains and 587.9 < change.value < 596.3
     assert not marked.checks[change.index].continued
     assert not marked.checks[change.index + 1].continued
+
+
+def test_hill_slope_is_the_cauchy_integral_of_the_condensed_stiffness():
+    # D'(s) = (1 / 2 pi i) \oint D(w) / (w - s)^2 dw on a small circle: D is analytic in s
+    from railtrack.equations.hill import condensed_stiffness, hill_matrix, hill_matrix_slope
+    passage = rt.Passage(FOLD_TRACK, rt.Train.paper(speed=450.0))
+    m = 6
+    toeplitz = np.zeros((2, 2 * m + 1, 2 * m + 1))
+    toeplitz[0] = 1e6 * np.eye(2 * m + 1)
+    exponent, theta = np.array([-20.0 + 35.0j, 3.0 - 60.0j]), np.array([0.3, 2.0])
+    matrix, slope = hill_matrix_slope(passage, toeplitz, exponent, theta)
+    np.testing.assert_allclose(matrix, hill_matrix(passage, toeplitz, exponent, theta),
+                               rtol=1e-14)
+    k = np.arange(-m, m + 1)
+    omega = passage.fundamental_frequency
+    s = exponent[:, None] + 1j * omega * k
+    q = k * omega * passage.sleeper_spacing / passage.speed - theta[:, None]
+    circle = 5.0 * np.exp(2j * np.pi * np.arange(64) / 64)
+    values = condensed_stiffness(passage, s[..., None] + circle, q[..., None])
+    cauchy = np.mean(values / circle, axis=-1)
+    np.testing.assert_allclose(slope, cauchy, rtol=1e-8)

@@ -29,6 +29,10 @@ circle, "stable" only when none does and the search could not have missed
 one (its box reaches above the a-priori estimate of |mu|, its contour has
 points enough, every phase was searched), and "unknown" otherwise
 (`railtrack.solvers.floquet_verdict`).
+
+Along a branch or a sweep, ``guess=`` the previous point's result continues
+its exponents by Newton's method instead of searching the box again
+(`railtrack.solvers.floquet_track`, which says what its verdicts mean).
 """
 
 from __future__ import annotations

@@ -2,9 +2,12 @@
 
 `check_branch` judges every point of a branch from `railtrack.continuation`.
 By default (``method="floquet"``) each point gets its Floquet multipliers by
-Hill's method (`railtrack.floquet`), which costs about as much as a few
-solves; where the verdict changes between two neighbouring points, the
-change is located: at a fold (a real multiplier through +1) it is the
+Hill's method (`railtrack.floquet`): searched in full at the first point,
+then continued by Newton from the previous point's (``guess=``, about as
+costly as a solve), with a full search wherever the continuation cannot be
+trusted and on both sides of every change of the verdict
+(`_continued_checks`); where the verdict changes between two neighbouring
+points, the change is located: at a fold (a real multiplier through +1) it is the
 fold's own value, elsewhere the parameter where the dominant multiplier
 crosses the unit circle is found by solving between the two points.  Each
 change is listed on the branch (`railtrack.studies.branch.StabilityChange`)
