@@ -46,7 +46,7 @@ from ..equations.harmonic_balance import harmonic_system
 from ..equations.hill import bloch_phases, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
 from .floquet_assembly import TAIL_LIMIT, _distinct, floquet_result
-from .floquet_track import CONTINUED_SHARE, continue_exponents, newton_parts
+from .floquet_track import continue_exponents, newton_parts
 from .floquet_verdict import MIN_POINTS, NEUTRAL, Floquet
 from .solution import Solution
 
@@ -55,6 +55,9 @@ MEMORY_BYTES = 256 * 2**20
 """Most memory one stack of Hill's matrices may take (phases are solved in groups) [bytes]."""
 EDGE = 1e-6
 """Tolerance on |Im lambda T| <= pi at the edges of the strip [rad]."""
+NEAR_DOUBLE = 1e-3
+"""Two multipliers of one phase closer than this (times max(1, |mu|)) at a guess are a near-double
+pair: continuing both may land both on one (`_continued`) [-]."""
 RESIDUAL_LIMIT = 1e-6
 """Largest relative residual ||H p|| / ||H|| of an exponent after Newton's refinement."""
 
@@ -278,20 +281,17 @@ def _continued(guess: Floquet, passage, toeplitz: np.ndarray, period: float, bas
     cut = min(m, m_guess)
     vectors[:, m - cut:m + cut + 1] = guess.vectors[:, m_guess - cut:m_guess + cut + 1]
     # each exponent's base phase and whether its family is mirrored (then only the
-    # phases up to pi are continued; the others are their conjugates); those far below
-    # the largest are left to the ceiling
-    size = np.abs(guess.multipliers)
+    # phases up to pi are continued; the others are their conjugates).  All are
+    # continued: one left out may rise fast (near a fold, on chapter 10's branch, from
+    # under half the dominant |mu| to above it in one step).
     families = [(base, bloch_phases(passage, base)) for base in bases]
     families = [(base, family, _mirrored(family)) for base, family in families]
-    keep, base_of, mirror_of, dropped = [], [], [], 0.0
+    keep, base_of, mirror_of = [], [], []
     for i, phase in enumerate(guess.phases):
         for base, family, mirrored in families:
             if np.min(np.abs(np.mod(phase - family + np.pi, 2 * np.pi) - np.pi)) < 1e-9:
                 if not mirrored or phase <= np.pi + 1e-12:
-                    if size[i] >= CONTINUED_SHARE * size.max():
-                        keep.append(i), base_of.append(base), mirror_of.append(mirrored)
-                    else:
-                        dropped = max(dropped, float(size[i]))
+                    keep.append(i), base_of.append(base), mirror_of.append(mirrored)
                 break
     keep = np.array(keep, dtype=int)
     if keep.size == 0:
@@ -299,10 +299,24 @@ def _continued(guess: Floquet, passage, toeplitz: np.ndarray, period: float, bas
     values, vectors, kept, move = continue_exponents(
         passage, toeplitz, period, guess.exponents[keep] * guess.period, vectors[keep],
         guess.phases[keep])
-    lost = np.abs(guess.multipliers[keep][~kept])
-    ceiling = max(guess.ceiling, dropped, float(lost.max(initial=0.0))) + move
+    # One lost on the way (not converged, or two onto one) is as a rule a pair meeting
+    # on the real axis, whose two real multipliers then part fast: search in full.
+    # Only the twin of a near-double pair off the real axis (1e-3 apart already at the
+    # guess, as on chapter 10's branch at 575 m/s) stays with its twin, under the ceiling.
+    start = np.exp(guess.exponents[keep] * guess.period)
+    phases = guess.phases[keep]
+    for j in np.flatnonzero(~kept):
+        near = NEAR_DOUBLE * max(1.0, abs(start[j]))
+        twins = kept & (np.abs(phases - phases[j]) < 1e-9) & (np.abs(start - start[j]) < near)
+        # near the real axis the twin is the conjugate, about to meet it there
+        if not twins.any() or abs(start[j].imag) < near:
+            return None
+    ceiling = max(guess.ceiling, float(np.max(np.abs(start[~kept]), initial=0.0))) + move
     low, high = box
-    values = values.real + 1j * (np.pi - np.mod(np.pi - values.imag, 2 * np.pi))
+    # One that crossed the strip's edge, |Im z| = pi, is a disturbance of the next phase
+    # of the family now, where its own exponent lies inside the strip: search in full.
+    if np.any(np.abs(values.imag) > np.pi + EDGE):
+        return None
     tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
     # The ceiling bounds the multipliers not continued; it matters only for a "stable":
     # a resolved multiplier found outside proves "unstable" whatever the others do.

@@ -1,11 +1,11 @@
 """Floquet exponents continued from a neighbouring solution by Newton's method.
 
 Along a branch or a speed sweep, the multipliers of one point are close to
-those of the next.  `continue_exponents` takes the exponents of a previous
-result (`railtrack.floquet`) down to `CONTINUED_SHARE` of its largest |mu|,
-with their eigenvectors, as the start of Newton's method on Hill's matrix of
-the new solution (`polish`): a few bordered solves per exponent, instead of
-a contour of 16-24 solves per Bloch phase over the whole box.
+those of the next.  `continue_exponents` takes every exponent of a previous
+result (`railtrack.floquet`), with its eigenvector, as the start of Newton's
+method on Hill's matrix of the new solution (`polish`): a few bordered
+solves per exponent, instead of a contour of 16-24 solves per Bloch phase
+over the whole box.
 
 What it can and cannot say.  A multiplier it finds outside the unit circle,
 resolved and with a small residual, is an eigenpair of Hill's matrix as much
@@ -13,20 +13,24 @@ as the contour's are: "unstable" is proved.  "Stable" rests on continuity:
 the exponents move continuously with the solution.  A full search found
 every multiplier in its box, so those it did not find lay below
 min_multiplier (or above the box, which the a-priori estimate rules out).
-The `ceiling` bounds the multipliers not continued: min_multiplier after a
-full search, then at each continued point the largest of the last ceiling,
-the |mu| of those left below `CONTINUED_SHARE` and the start |mu| of any
-exponent lost on the way (not converged, or onto another one), plus the
-largest move |Delta mu| of a continued multiplier.  If the spectrum moves no
-faster than its continued members, every multiplier not continued lies at
-|mu| <= ceiling; while that is below the largest continued one the listed
-dominant multiplier is the dominant one, and while it is below 1 the
-continued ones decide the verdict; beyond either, the caller searches in
-full again.  So a
-continued "stable" means: no multiplier outside the unit circle among those
-continued from a full search that proved stability, and the spectrum moved
-too little since for another to have reached it.  `Floquet.continued` marks
-it, `Floquet.ceiling` holds the ceiling, and its message says so.
+The `ceiling` bounds the multipliers not continued (those that entered the
+box through its bottom): min_multiplier after a full search, then at each
+continued point the last ceiling plus the largest move |Delta mu| of a
+continued multiplier.  If the spectrum moves no faster than its continued
+members, every multiplier not continued lies at |mu| <= ceiling; while that
+is below the largest continued one the listed dominant multiplier is the
+dominant one, and while it is below 1 the continued ones decide the
+verdict; beyond either, the caller searches in full again.  An exponent
+lost on the way (not converged, or onto another one: as a rule a complex
+pair meeting on the real axis, whose two real multipliers then part fast)
+ends the continuation too, and so does one that crossed the strip's edge
+|Im lambda T| = pi (it belongs to the next phase of the family now).  All
+are continued: on chapter 10's branch, near a fold, a multiplier rose from
+under half the dominant |mu| to above it in one step.  So a continued
+"stable" means: no multiplier outside the unit circle among those continued
+from a full search that proved stability, and the spectrum moved too little
+since for another to have reached it.  `Floquet.continued` marks it,
+`Floquet.ceiling` holds the ceiling, and its message says so.
 """
 
 from __future__ import annotations
@@ -37,10 +41,8 @@ from ..equations.hill import hill_matrix_slope
 from ..model.passage import Passage
 from .contour import polish
 
-__all__ = ["CONTINUED_SHARE", "continue_exponents", "newton_parts"]
+__all__ = ["continue_exponents", "newton_parts"]
 
-CONTINUED_SHARE = 0.5
-"""Multipliers below this share of the largest |mu| are not continued: the ceiling covers them [-]."""
 TRACK_RESIDUAL = 1e-6
 """Largest relative residual ||H p|| / ||H|| of a continued exponent (as `RESIDUAL_LIMIT`)."""
 
@@ -73,7 +75,7 @@ def continue_exponents(passage: Passage, toeplitz: np.ndarray, period: float,
         Their eigenvectors, unit norm.
     kept : ndarray of bool, shape (r,)
         False for an exponent lost on the way (not converged, or converged
-        onto another one).
+        onto another one): the caller then searches in full.
     move : float
         The largest |Delta mu| of a kept exponent [-].
     """

@@ -238,7 +238,8 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
             steady = i if verdicts[i] == "stable" else i + 1
             near = folds[i].value + FOLD_STEP * (values[steady] - folds[i].value)
             trial = _solved(branch, near, branch.coefficients[steady])
-            past = None if trial is None else floquet(trial, theta, **options)
+            past = None if trial is None else floquet(trial, theta, guess=checks[steady],
+                                                      **options)
             if past is None or past.verdict != "unstable":
                 kind, value, frequency, phase = "fold", folds[i].value, 0.0, 0.0
             else:
@@ -257,11 +258,13 @@ def _continued_checks(branch: Branch, theta, options) -> dict:
 
     Each point's multipliers are continued by Newton from the previous
     point's (`railtrack.floquet` with ``guess=``, which searches in full
-    where the continuation cannot be trusted, `railtrack.solvers.floquet_track`).  Where the verdict changes next to a continued point,
-    both points are searched in full, and if a full search disagrees with a
-    continued verdict, the points before it are searched in full back to
-    one that agrees: every change the branch lists lies between two points
-    searched in full.
+    where the continuation cannot be trusted: `railtrack.solvers.floquet_track`).
+    Where the verdict changes, the points on either side not proved unstable
+    (a continued "unstable" is proved by the multiplier found outside) are
+    searched in full, and if a full search disagrees with a continued
+    verdict, the points before it are searched in full back to one that
+    agrees: every change the branch lists lies between a point searched in
+    full and one searched in full or proved unstable.
     """
     checks: dict = {}
 
@@ -273,10 +276,12 @@ def _continued_checks(branch: Branch, theta, options) -> dict:
                                                     guess=checks[i - 1], **options)
         if i == 0 or checks[i].verdict == checks[i - 1].verdict:
             continue
-        if checks[i].continued:
+        # a continued "unstable" is proved (a multiplier found outside); the others rest
+        # on continuity, and next to a change the full search decides
+        if checks[i].continued and checks[i].verdict != "unstable":
             checks[i] = full(i)
         k = i - 1
-        while k >= 0 and checks[k].continued:
+        while k >= 0 and checks[k].continued and checks[k].verdict != "unstable":
             verdict, checks[k] = checks[k].verdict, full(k)
             if checks[k].verdict == verdict:
                 break
