@@ -46,7 +46,7 @@ from ..equations.harmonic_balance import harmonic_system
 from ..equations.hill import bloch_phases, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
 from .floquet_assembly import TAIL_LIMIT, _distinct, floquet_result
-from .floquet_track import continue_exponents, newton_parts
+from .floquet_track import continue_exponents, newton_parts, one_blas_thread
 from .floquet_verdict import MIN_POINTS, NEUTRAL, Floquet
 from .solution import Solution
 
@@ -77,6 +77,7 @@ def _base_phases(theta, sleepers: int) -> np.ndarray:
     return values.astype(float)
 
 
+@one_blas_thread
 def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
             min_multiplier: float = 1e-2, max_multiplier: float = 1e6,
             points: int = 24, shifts: bool = True, guess: Floquet | None = None) -> Floquet:

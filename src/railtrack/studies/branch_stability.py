@@ -35,6 +35,7 @@ import dataclasses
 import numpy as np
 
 from ..solvers.floquet import floquet
+from ..solvers.floquet_track import one_blas_thread
 from ..solvers.solve import solve
 from .branch import Branch, StabilityChange, replaced
 from .stability import check_stability
@@ -211,6 +212,7 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
                                checks=dict(sorted(checks.items())))
 
 
+@one_blas_thread
 def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) -> Branch:
     """`check_branch` by Hill's method: every point, then each change located."""
     # The verdict needs only the dominant multiplier, which 16 contour points find
