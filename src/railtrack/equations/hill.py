@@ -39,7 +39,7 @@ from numpy.typing import ArrayLike
 from ..model.passage import Passage
 
 __all__ = ["complex_receptance", "condensed_stiffness", "tangent_toeplitz", "hill_matrix",
-           "hill_derivative", "bloch_phases"]
+           "hill_derivative", "hill_matrix_slope", "bloch_phases"]
 
 # eta(s, q) = L^3 [f1(a) + cos(q) f2(a)] / (4 EI G(a, q)) with a = k_b L,
 # f1 = (sin a cosh a - sinh a cos a) / a^3 and f2 = (sinh a - sin a) / a^3:
@@ -62,24 +62,33 @@ def _polynomial(coefficients: np.ndarray, x: np.ndarray) -> np.ndarray:
 
 def _bending_functions(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """f1(a), f2(a) of the receptance, by series for small |a|, closed form above."""
-    x = a**4
-    f1, f2 = _polynomial(_F1, x), _polynomial(_F2, x)
     large = np.abs(a) >= _SERIES_BELOW
-    if np.any(large):
-        b = np.where(large, a, _SERIES_BELOW)
-        f1 = np.where(large, (np.sin(b) * np.cosh(b) - np.sinh(b) * np.cos(b)) / b**3, f1)
-        f2 = np.where(large, (np.sinh(b) - np.sin(b)) / b**3, f2)
+    f1, f2 = np.empty_like(a), np.empty_like(a)
+    # each form only where it is used: the Newton and contour loops call this often
+    small = ~large
+    if small.any():
+        x = a[small] ** 4
+        f1[small], f2[small] = _polynomial(_F1, x), _polynomial(_F2, x)
+    if large.any():
+        b = a[large]
+        sin, cos, sinh, cosh = np.sin(b), np.cos(b), np.sinh(b), np.cosh(b)
+        f1[large] = (sin * cosh - sinh * cos) / b**3
+        f2[large] = (sinh - sin) / b**3
     return f1, f2
 
 
 def _receptance_parts(passage: Passage, s: np.ndarray, q: np.ndarray):
     """N = f1 + cos(q) f2 and G = (cos a - cos q)(cosh a - cos q), both entire in s."""
     ratio = passage.rail_linear_mass / passage.rail_bending_stiffness
-    a = (-ratio * s**2 + 0j) ** 0.25 * passage.sleeper_spacing  # any fourth root will do
+    a = np.sqrt(np.sqrt(-ratio * s * s + 0j)) * passage.sleeper_spacing  # any fourth root will do
     f1, f2 = _bending_functions(a)
-    # differences of cosines as products of sines: no cancellation at small a or q
-    cos_gap = -2.0 * np.sin(0.5 * (a + q)) * np.sin(0.5 * (a - q))
-    cosh_gap = 2.0 * (np.sinh(0.5 * a) ** 2 + np.sin(0.5 * q) ** 2)
+    # differences of cosines as products of sines: no cancellation at small a or q;
+    # sin(x +- y) expanded so that the functions of a (of s alone) are taken once
+    # for every phase q broadcast against them
+    half_a, half_q = 0.5 * a, 0.5 * q
+    sin_a, cos_a, sin_q, cos_q = np.sin(half_a), np.cos(half_a), np.sin(half_q), np.cos(half_q)
+    cos_gap = -2.0 * (sin_a * cos_q + cos_a * sin_q) * (sin_a * cos_q - cos_a * sin_q)
+    cosh_gap = 2.0 * (np.sinh(half_a) ** 2 + sin_q**2)
     return f1 + np.cos(q) * f2, cos_gap * cosh_gap
 
 
@@ -210,11 +219,14 @@ def hill_matrix(passage: Passage, toeplitz: np.ndarray, exponent: ArrayLike,
     omega = passage.fundamental_frequency
     s = np.asarray(exponent, dtype=complex)[..., None] + 1j * omega * k
     q = k * omega * passage.sleeper_spacing / passage.speed - np.asarray(theta)[..., None]
-    s = np.broadcast_to(s, np.broadcast_shapes(s.shape, q.shape))
-    matrix = s[..., None, :] * toeplitz[1]
+    # D(s, q) of s and q unbroadcast: the rail's bending functions depend on s alone,
+    # shared by all the phases of a contour's stack
+    stiffness = condensed_stiffness(passage, s, q)
+    shape = np.broadcast_shapes(s.shape, q.shape)
+    matrix = np.broadcast_to(s, shape)[..., None, :] * toeplitz[1]
     matrix += toeplitz[0]
     diagonal = np.arange(2 * m + 1)
-    matrix[..., diagonal, diagonal] += condensed_stiffness(passage, s, q)
+    matrix[..., diagonal, diagonal] += stiffness
     return matrix
 
 
@@ -226,11 +238,36 @@ def hill_derivative(passage: Passage, toeplitz: np.ndarray, exponent: ArrayLike,
     give r products.  D is analytic in s, so the difference of width
     `step` (relative to 1 + |s_k|) has an error of order step^2.
     """
+    return _slope(passage, toeplitz, exponent, theta, step)[1] * vector + vector @ toeplitz[1].T
+
+
+def hill_matrix_slope(passage: Passage, toeplitz: np.ndarray, exponent: ArrayLike,
+                      theta: ArrayLike, step: float = 1e-6) -> tuple[np.ndarray, np.ndarray]:
+    """Hill's matrix and dD/ds on its diagonal, from one evaluation of D at s and s +- h.
+
+    For Newton's method, which needs both at each step (`hill_matrix`,
+    `hill_derivative`): `exponent` and `theta` of shape (r,) give r matrices,
+    shape (r, 2m+1, 2m+1) [N/m], and r diagonals, shape (r, 2m+1) [N s/m].
+    """
+    stiffness, slope = _slope(passage, toeplitz, exponent, theta, step)
+    m = (toeplitz.shape[-1] - 1) // 2
+    s = np.asarray(exponent, dtype=complex)[..., None] + 1j * passage.fundamental_frequency * \
+        np.arange(-m, m + 1)
+    matrix = s[..., None, :] * toeplitz[1]
+    matrix += toeplitz[0]
+    diagonal = np.arange(2 * m + 1)
+    matrix[..., diagonal, diagonal] += stiffness
+    return matrix, slope
+
+
+def _slope(passage: Passage, toeplitz: np.ndarray, exponent: ArrayLike, theta: ArrayLike,
+           step: float) -> tuple[np.ndarray, np.ndarray]:
+    """D(s_k, q_k) and its central difference in s, from one call at s, s + h and s - h."""
     m = (toeplitz.shape[-1] - 1) // 2
     k = np.arange(-m, m + 1)
     omega = passage.fundamental_frequency
     s = np.asarray(exponent, dtype=complex)[..., None] + 1j * omega * k
     q = k * omega * passage.sleeper_spacing / passage.speed - np.asarray(theta)[..., None]
     h = step * (1.0 + np.abs(s))
-    slope = (condensed_stiffness(passage, s + h, q) - condensed_stiffness(passage, s - h, q)) / (2 * h)
-    return slope * vector + vector @ toeplitz[1].T
+    values = condensed_stiffness(passage, np.stack([s, s + h, s - h]), q)
+    return values[0], (values[1] - values[2]) / (2 * h)

@@ -6,7 +6,9 @@
 `arguments` (checks of the arguments), `foundation_at_rest`, `solution`
 (the `Solution` and the time histories it defines), `energy` (the work
 of the pads, the foundation and the loads), `floquet` and `contour`
-(stability by Hill's method), and for a cell of N sleepers `cell_newton`,
+(stability by Hill's method), `floquet_track` (its multipliers continued
+from a neighbouring solution), `floquet_assembly` (the `Floquet` result
+judged), and for a cell of N sleepers `cell_newton`,
 `cell_step` (its structured Newton step), `cell_auto` (m = "auto"),
 `cell_truncation` (its truncation estimate, in the Floquet modes),
 `cell_static` (the track under its own weight), `cell_solution` and

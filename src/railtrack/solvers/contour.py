@@ -74,19 +74,38 @@ def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: compl
     values = values.reshape((-1, points, n, n))
     rng = np.random.default_rng(seed)
     columns = min(columns, n)
+    probe = np.empty((n, 0), dtype=complex)
+    solved = np.empty(values.shape[:2] + (n, 0), dtype=complex)
+    growing = np.arange(values.shape[0])
     while True:
-        probe = rng.standard_normal((n, columns)) + 1j * rng.standard_normal((n, columns))
-        solved = np.linalg.solve(values, np.broadcast_to(probe, values.shape[:2] + (n, columns)))
-        first = np.einsum("k,bkij->bij", weights, solved)
-        second = np.einsum("k,bkij->bij", weights * z, solved)
-        u, sigma, wh = np.linalg.svd(first, full_matrices=False)
+        # Only the problems whose rank filled the probe are solved again, and only for
+        # the probe's new columns: the columns solved before stay valid.
+        extra = columns - probe.shape[1]
+        new = rng.standard_normal((n, extra)) + 1j * rng.standard_normal((n, extra))
+        probe = np.concatenate([probe, new], axis=1)
+        grown = np.zeros(values.shape[:2] + (n, columns), dtype=complex)
+        grown[..., : solved.shape[-1]] = solved
+        grown[growing, ..., solved.shape[-1]:] = np.linalg.solve(
+            values[growing], np.broadcast_to(new, (growing.size, points, n, extra)))
+        solved = grown
+        first = np.einsum("k,bkij->bij", weights, solved[growing])
+        u_part, sigma_part, wh_part = np.linalg.svd(first, full_matrices=False)
+        if growing.size == values.shape[0]:
+            u, sigma, wh = u_part, sigma_part, wh_part
+        else:
+            u, sigma, wh = _widened(u, (-1,), columns), _widened(sigma, (-1,), columns), \
+                _widened(wh, (-2, -1), columns)
+            u[growing], sigma[growing], wh[growing] = u_part, sigma_part, wh_part
         # Against the integrand's own size, not A_0's: with no eigenvalue inside,
         # A_0 is quadrature noise and all of it must count as rank 0.
         scale = np.max(np.abs(solved), axis=(1, 2, 3))[:, None]
         ranks = np.sum(sigma > RANK_TOLERANCE * scale, axis=1)
-        if np.all(ranks < columns) or columns == n:
+        full = ranks >= columns
+        if not full.any() or columns == n:
             break
+        growing = np.flatnonzero(full)
         columns = min(2 * columns, n)
+    second = np.einsum("k,bkij->bij", weights * z, solved)
     pairs = []
     for b, rank in enumerate(ranks):
         if rank == 0:
@@ -97,6 +116,14 @@ def contour_eigenpairs(matrix: Callable[[np.ndarray], np.ndarray], center: compl
         eigenvalues, eigenvectors = np.linalg.eig(reduced)
         pairs.append((eigenvalues, left @ eigenvectors))
     return pairs
+
+
+def _widened(array: np.ndarray, axes: tuple[int, ...], columns: int) -> np.ndarray:
+    """`array` padded with zeros along `axes` to `columns` entries (at most n)."""
+    pad = [(0, 0)] * array.ndim
+    for axis in axes:
+        pad[axis] = (0, max(0, columns - array.shape[axis]))
+    return np.pad(array, pad)
 
 
 def polish(matrix: Callable[[np.ndarray], np.ndarray], values: np.ndarray, vectors: np.ndarray,

@@ -29,6 +29,10 @@ circle, "stable" only when none does and the search could not have missed
 one (its box reaches above the a-priori estimate of |mu|, its contour has
 points enough, every phase was searched), and "unknown" otherwise
 (`railtrack.solvers.floquet_verdict`).
+
+Along a branch or a sweep, ``guess=`` the previous point's result continues
+its exponents by Newton's method instead of searching the box again
+(`railtrack.solvers.floquet_track`, which says what its verdicts mean).
 """
 
 from __future__ import annotations
@@ -39,20 +43,21 @@ import numpy as np
 
 from ..equations.aft_jacobian import tangent_harmonics
 from ..equations.harmonic_balance import harmonic_system
-from ..equations.hill import bloch_phases, hill_derivative, hill_matrix, tangent_toeplitz
+from ..equations.hill import bloch_phases, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
-from .floquet_verdict import (MIN_POINTS, NEUTRAL, Floquet, growth_bound, neutral_note,
-                              search_verdict)
+from .floquet_assembly import TAIL_LIMIT, _distinct, floquet_result
+from .floquet_track import continue_exponents, newton_parts, one_blas_thread
+from .floquet_verdict import MIN_POINTS, NEUTRAL, Floquet
 from .solution import Solution
 
 __all__ = ["Floquet", "floquet", "floquet_result", "TAIL_LIMIT"]
-
-TAIL_LIMIT = 0.05
-"""Largest share of an eigenvector's norm on the top fifth of the harmonics for a resolved exponent."""
 MEMORY_BYTES = 256 * 2**20
 """Most memory one stack of Hill's matrices may take (phases are solved in groups) [bytes]."""
 EDGE = 1e-6
 """Tolerance on |Im lambda T| <= pi at the edges of the strip [rad]."""
+NEAR_DOUBLE = 1e-3
+"""Two multipliers of one phase closer than this (times max(1, |mu|)) at a guess are a near-double
+pair: continuing both may land both on one (`_continued`) [-]."""
 RESIDUAL_LIMIT = 1e-6
 """Largest relative residual ||H p|| / ||H|| of an exponent after Newton's refinement."""
 
@@ -72,20 +77,10 @@ def _base_phases(theta, sleepers: int) -> np.ndarray:
     return values.astype(float)
 
 
-def _kind(multiplier: complex, tol: float = 1e-6) -> tuple[str, float]:
-    angle = abs(float(np.angle(multiplier)))
-    if multiplier == 0:
-        return "none", float("nan")
-    if angle < tol:
-        return "real +", 0.0
-    if angle > np.pi - tol:
-        return "real -", 0.5
-    return "complex", angle / (2.0 * np.pi)
-
-
+@one_blas_thread
 def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
             min_multiplier: float = 1e-2, max_multiplier: float = 1e6,
-            points: int = 24, shifts: bool = True) -> Floquet:
+            points: int = 24, shifts: bool = True, guess: Floquet | None = None) -> Floquet:
     """The Floquet multipliers of a periodic solution and its stability, by Hill's method.
 
     Parameters
@@ -121,6 +116,14 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
         only the disturbances whose exponent lies in that one phase's strip,
         so that it finds "unstable" or "unknown", never "stable"; `solve`
         uses it to warn.
+    guess : Floquet, optional
+        The result of `floquet` for a neighbouring solution (the next point
+        of a branch or a sweep, or the same orbit at fewer harmonics), with
+        the same `theta` and box.  Its exponents are continued by Newton's
+        method instead of searched for, a few bordered solves per exponent
+        (`railtrack.solvers.floquet_track` says when that is trusted and
+        what its "stable" means: `Floquet.continued` is then True); where it
+        cannot be trusted the box is searched as without a guess.
 
     Returns
     -------
@@ -196,13 +199,18 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     band = m - max(1, (2 * m + 1) // 10)
     top = np.abs(np.arange(-m, m + 1)) > band
     search = toeplitz[:, m - band:m + band + 1, m - band:m + band + 1]
+    if guess is not None:
+        continued = _continued(guess, passage, toeplitz, period, bases, (low, high), top)
+        if continued is not None:
+            return floquet_result(_distinct(continued[0]), bases, sleepers, m, period,
+                                  min_multiplier, solution, max_multiplier=max_multiplier,
+                                  points=points, shifts=shifts, guess=guess, ceiling=continued[1])
     candidates, found = [], []
     for base in bases:
         phases = bloch_phases(passage, base) if shifts else np.array([float(base)])
         # Conjugation maps the exponents of phase theta onto those of -theta: where the
         # family holds both, the phases above pi are the mirror images of those below.
-        mirrored = bool(np.all(np.min(np.abs(np.mod(-phases[:, None] - phases[None, :] + np.pi,
-                                                      2 * np.pi) - np.pi), axis=1) < 1e-9))
+        mirrored = _mirrored(phases)
         solved = phases[phases <= np.pi + 1e-12] if mirrored else phases
 
         # Phases in groups whose stack of matrices stays under MEMORY_BYTES.
@@ -223,24 +231,14 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     if candidates:
         z0, p0, phase, base, mirrored = (np.array(column) for column in zip(*candidates))
 
-        def matrix(z, rows):
-            return hill_matrix(passage, toeplitz, z / period, phase[rows])
-
-        def slope(z, p, rows):
-            return hill_derivative(passage, toeplitz, z / period, phase[rows], p) / period
         # Newton on the candidates in groups, so that the bordered matrices stay under
         # MEMORY_BYTES; each candidate's iteration is its own, so grouping changes nothing.
         chunk = max(1, int(MEMORY_BYTES // (16 * 4 * (2 * m + 2) ** 2)))
         parts = []
         for start in range(0, z0.size, chunk):
             rows = np.arange(start, min(start + chunk, z0.size))
-
-            def local(z, which, rows=rows):
-                return matrix(z, rows[which])
-
-            def local_slope(z, p, which, rows=rows):
-                return slope(z, p, rows[which])
-            parts.append(polish(local, z0[rows], p0[rows], local_slope))
+            matrix, slope = newton_parts(passage, toeplitz, period, phase[rows])
+            parts.append(polish(matrix, z0[rows], p0[rows], slope))
         values, vectors, residuals = (np.concatenate(part) for part in zip(*parts))
         # A real negative multiplier sits on the strip's edge, Im z = +-pi, where
         # round-off decides the side: accept both edges, fold them onto (-pi, pi].
@@ -249,59 +247,94 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
         values = values.real + 1j * (np.pi - np.mod(np.pi - values.imag, 2 * np.pi))
         tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
         for i in np.flatnonzero(inside):
-            found.append((values[i], phase[i], tails[i], base[i]))
-            if mirrored[i] and 1e-12 < phase[i] < np.pi - 1e-12:
-                found.append((np.conj(values[i]), 2 * np.pi - phase[i], tails[i], base[i]))
+            found += _with_mirror(values[i], phase[i], tails[i], base[i], vectors[i], mirrored[i])
     return floquet_result(_distinct(found), bases, sleepers, m, period, min_multiplier, solution,
                           max_multiplier=max_multiplier, points=points, shifts=shifts)
 
 
-def floquet_result(found: list, bases: np.ndarray, count: int, m: int, period: float,
-                   min_multiplier: float, solution, *, max_multiplier: float, points: int,
-                   shifts: bool, per: str = "sleeper") -> Floquet:
-    """The `Floquet` of the exponents `found` (z = lambda T, phase, tail, base), judged.
+def _with_mirror(z, phase, tail, base, vector, mirrored) -> list:
+    """The exponent, and where the family holds -phase, its conjugate there.
 
-    Shared by one sleeper (`floquet`, phases per sleeper) and a cell
-    (`railtrack.solvers.cell_floquet`, ``per="cell"``): `count` phases of
-    the family per base phase.
+    H(conj z; -theta) is the conjugate of H(z; theta) with the harmonics
+    reversed, so the mirror's eigenvector is conj(p_{-k}).
     """
-    z = np.array([f[0] for f in found], dtype=complex)
-    # By decreasing |mu|; a conjugate pair (equal |mu|) lists the member with the
-    # smaller phase, then the one turning forward, first, whatever the round-off.
-    found_phases = np.array([f[1] for f in found])
-    order = np.lexsort((-z.imag, np.round(found_phases, 9), -np.round(z.real, 9)))
-    z = z[order]
-    phases = np.array([found[i][1] for i in order])
-    tail = np.array([found[i][2] for i in order])
-    resolved = tail <= TAIL_LIMIT
-    multipliers = np.exp(z)
-    dominant = complex(multipliers[resolved][0]) if resolved.any() else 0j
-    kind, frequency = _kind(dominant)
-    theta_dominant = float(phases[resolved][0]) if resolved.any() else float("nan")
-    bases_of = np.array([found[i][3] for i in order])
-    worst = float(bases_of[resolved][0]) if resolved.any() else float(bases[0])
-    # the bound matters only where it could turn a "stable" into "unknown"
-    bound = growth_bound(solution) if abs(dominant) <= 1 + NEUTRAL and shifts else float("nan")
-    verdict, gaps = search_verdict(dominant, max_multiplier=max_multiplier, bound=bound,
-                                   points=int(points), shifts=shifts)
-    family = f"{bases.size} x {count} phases" + (" per cell" if per == "cell" else "")
-    message = (f"{verdict}: largest multiplier |mu| = "
-               f"{abs(dominant):.4g} ({kind}"
-               + (f", frequency {frequency:.3g} v/H" if kind == "complex" else "")
-               + f") at Bloch phase {theta_dominant:.3g} rad per {per}; {int(resolved.sum())} "
-               f"resolved multipliers with |mu| >= {min_multiplier:g} over {family}, m = {m}"
-               + neutral_note(dominant)
-               + (f"; none outside the unit circle, but {gaps}" if gaps else ""))
-    return Floquet(multipliers, z / period, phases, tail, resolved, dominant, verdict == "stable",
-                   kind, frequency, theta_dominant, bases, worst, period, m, message, verdict,
-                   bound)
+    found = [(z, phase, tail, base, vector)]
+    if mirrored and 1e-12 < phase < np.pi - 1e-12:
+        found.append((np.conj(z), 2 * np.pi - phase, tail, base, np.conj(vector[::-1])))
+    return found
 
 
-def _distinct(found: list) -> list:
-    """Drop repeats: one multiplier found twice at one phase (z and z + 2 pi i at the edges)."""
-    kept: list = []
-    for item in found:
-        if not any(abs(np.exp(item[0]) - np.exp(k[0])) < 1e-7 * max(1.0, abs(np.exp(item[0])))
-                   and abs(item[1] - k[1]) < 1e-9 for k in kept):
-            kept.append(item)
-    return kept
+def _continued(guess: Floquet, passage, toeplitz: np.ndarray, period: float, bases: np.ndarray,
+               box: tuple[float, float], top: np.ndarray) -> tuple[list, float] | None:
+    """The exponents of `guess` continued to this solution and their ceiling, or None.
+
+    `railtrack.solvers.floquet_track`; None where that cannot be trusted.
+    """
+    if not isinstance(guess, Floquet) or guess.vectors is None:
+        raise TypeError("guess must be a Floquet from rt.floquet of a neighbouring Solution (with "
+                        f"its eigenvectors); got {type(guess).__name__}")
+    if guess.base_phases.shape != bases.shape or not np.allclose(guess.base_phases, bases):
+        raise ValueError(f"guess was computed for the base phases {guess.base_phases!r}, this "
+                         f"search asks for {bases!r}: pass the same theta")
+    n, count = toeplitz.shape[-1], guess.vectors.shape[1]
+    m, m_guess = (n - 1) // 2, (count - 1) // 2
+    vectors = np.zeros((guess.vectors.shape[0], n), dtype=complex)
+    cut = min(m, m_guess)
+    vectors[:, m - cut:m + cut + 1] = guess.vectors[:, m_guess - cut:m_guess + cut + 1]
+    # each exponent's base phase and whether its family is mirrored (then only the
+    # phases up to pi are continued; the others are their conjugates).  All are
+    # continued: one left out may rise fast (near a fold, on chapter 10's branch, from
+    # under half the dominant |mu| to above it in one step).
+    families = [(base, bloch_phases(passage, base)) for base in bases]
+    families = [(base, family, _mirrored(family)) for base, family in families]
+    keep, base_of, mirror_of = [], [], []
+    for i, phase in enumerate(guess.phases):
+        for base, family, mirrored in families:
+            if np.min(np.abs(np.mod(phase - family + np.pi, 2 * np.pi) - np.pi)) < 1e-9:
+                if not mirrored or phase <= np.pi + 1e-12:
+                    keep.append(i), base_of.append(base), mirror_of.append(mirrored)
+                break
+    keep = np.array(keep, dtype=int)
+    if keep.size == 0:
+        return None
+    values, vectors, kept, move = continue_exponents(
+        passage, toeplitz, period, guess.exponents[keep] * guess.period, vectors[keep],
+        guess.phases[keep])
+    # One lost on the way (not converged, or two onto one) is as a rule a pair meeting
+    # on the real axis, whose two real multipliers then part fast: search in full.
+    # Only the twin of a near-double pair off the real axis (1e-3 apart already at the
+    # guess, as on chapter 10's branch at 575 m/s) stays with its twin, under the ceiling.
+    start = np.exp(guess.exponents[keep] * guess.period)
+    phases = guess.phases[keep]
+    for j in np.flatnonzero(~kept):
+        near = NEAR_DOUBLE * max(1.0, abs(start[j]))
+        twins = kept & (np.abs(phases - phases[j]) < 1e-9) & (np.abs(start - start[j]) < near)
+        # near the real axis the twin is the conjugate, about to meet it there
+        if not twins.any() or abs(start[j].imag) < near:
+            return None
+    ceiling = max(guess.ceiling, float(np.max(np.abs(start[~kept]), initial=0.0))) + move
+    low, high = box
+    # One that crossed the strip's edge, |Im z| = pi, is a disturbance of the next phase
+    # of the family now, where its own exponent lies inside the strip: search in full.
+    if np.any(np.abs(values.imag) > np.pi + EDGE):
+        return None
+    tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
+    # The ceiling bounds the multipliers not continued; it matters only for a "stable":
+    # a resolved multiplier found outside proves "unstable" whatever the others do.
+    outside = np.any(kept & (tails <= TAIL_LIMIT) & (values.real > np.log1p(NEUTRAL)))
+    # the dominant multiplier must be among those continued: none not continued may
+    # reach it (a pair colliding on the real axis loses one, whose partner then leads)
+    top_listed = np.max(np.abs(np.exp(values[kept & (tails <= TAIL_LIMIT)])), initial=0.0)
+    if np.any(values.real > high) or (ceiling >= 1.0 and not outside) or ceiling >= top_listed:
+        return None
+    found: list = []
+    for i in np.flatnonzero(kept & (values.real >= low)):   # below: left through the bottom
+        found += _with_mirror(values[i], guess.phases[keep[i]], tails[i], base_of[i],
+                              vectors[i], mirror_of[i])
+    return found, ceiling
+
+
+def _mirrored(phases: np.ndarray) -> bool:
+    """Whether the family of phases holds -theta for each theta (conjugate exponents)."""
+    return bool(np.all(np.min(np.abs(np.mod(-phases[:, None] - phases[None, :] + np.pi,
+                                              2 * np.pi) - np.pi), axis=1) < 1e-9))

@@ -121,6 +121,19 @@ class Floquet:
     bound : float
         The a-priori estimate of |mu| of the linearised track (`growth_bound`)
         [-]; NaN if not computed.
+    vectors : ndarray of complex or None
+        The eigenvector of each multiplier on harmonics -m..m, unit norm, shape
+        (count, 2m+1); None where not kept (a cell's).  `railtrack.floquet`
+        continues them with ``guess=``.
+    continued : bool
+        True if the multipliers were continued by Newton from a neighbouring
+        solution's (``guess=``), not searched for
+        (`railtrack.solvers.floquet_track` says what its "stable" means).
+    ceiling : float
+        The largest |mu| a multiplier not listed can have [-]: the box's
+        min_multiplier after a full search; for a continued result, that of
+        the last full search plus how far the spectrum moved since
+        (`railtrack.solvers.floquet_track`).  NaN if not known.
     """
 
     multipliers: np.ndarray
@@ -140,6 +153,9 @@ class Floquet:
     message: str
     verdict: str | None = None
     bound: float = float("nan")
+    vectors: np.ndarray | None = None
+    continued: bool = False
+    ceiling: float = float("nan")
 
     def __post_init__(self) -> None:
         if self.verdict is None:      # built from a bare flag: it says what the flag says

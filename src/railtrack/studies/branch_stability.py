@@ -2,9 +2,12 @@
 
 `check_branch` judges every point of a branch from `railtrack.continuation`.
 By default (``method="floquet"``) each point gets its Floquet multipliers by
-Hill's method (`railtrack.floquet`), which costs about as much as a few
-solves; where the verdict changes between two neighbouring points, the
-change is located: at a fold (a real multiplier through +1) it is the
+Hill's method (`railtrack.floquet`): searched in full at the first point,
+then continued by Newton from the previous point's (``guess=``, about as
+costly as a solve), with a full search wherever the continuation cannot be
+trusted and on both sides of every change of the verdict
+(`_continued_checks`); where the verdict changes between two neighbouring
+points, the change is located: at a fold (a real multiplier through +1) it is the
 fold's own value, elsewhere the parameter where the dominant multiplier
 crosses the unit circle is found by solving between the two points.  Each
 change is listed on the branch (`railtrack.studies.branch.StabilityChange`)
@@ -32,6 +35,7 @@ import dataclasses
 import numpy as np
 
 from ..solvers.floquet import floquet
+from ..solvers.floquet_track import one_blas_thread
 from ..solvers.solve import solve
 from .branch import Branch, StabilityChange, replaced
 from .stability import check_stability
@@ -43,6 +47,7 @@ FOLD_STEP = 0.02
 """Where a point just past a fold is solved, as a fraction of the way to the next point [-]."""
 VERDICT_POINTS = 16
 """Contour points per phase for the verdicts of `check_branch` (see `_floquet_branch`)."""
+
 
 
 def segments(branch: Branch) -> list[range]:
@@ -207,13 +212,14 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
                                checks=dict(sorted(checks.items())))
 
 
+@one_blas_thread
 def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) -> Branch:
     """`check_branch` by Hill's method: every point, then each change located."""
     # The verdict needs only the dominant multiplier, which 16 contour points find
     # as 48 do at every point of chapter 10's fold branch (tests/test_floquet.py);
     # the full set of multipliers needs `floquet`'s default 24.
     options.setdefault("points", VERDICT_POINTS)
-    checks = {i: floquet(branch.solution(i), theta, **options) for i in range(len(branch))}
+    checks = _continued_checks(branch, theta, options)
     stable = np.array([checks[i].stable for i in range(len(branch))], dtype=object)
     verdicts = [checks[i].verdict for i in range(len(branch))]
     dominant = np.array([checks[i].dominant for i in range(len(branch))])
@@ -234,7 +240,8 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
             steady = i if verdicts[i] == "stable" else i + 1
             near = folds[i].value + FOLD_STEP * (values[steady] - folds[i].value)
             trial = _solved(branch, near, branch.coefficients[steady])
-            past = None if trial is None else floquet(trial, theta, **options)
+            past = None if trial is None else floquet(trial, theta, guess=checks[steady],
+                                                      **options)
             if past is None or past.verdict != "unstable":
                 kind, value, frequency, phase = "fold", folds[i].value, 0.0, 0.0
             else:
@@ -246,6 +253,42 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
                                        bool(stable[i + 1])))
     return dataclasses.replace(branch, stable=stable, checks=checks, multipliers=dominant,
                                changes=tuple(changes))
+
+
+def _continued_checks(branch: Branch, theta, options) -> dict:
+    """The `Floquet` of every point: searched in full, or continued from its neighbour.
+
+    Each point's multipliers are continued by Newton from the previous
+    point's (`railtrack.floquet` with ``guess=``, which searches in full
+    where the continuation cannot be trusted: `railtrack.solvers.floquet_track`).
+    Where the verdict changes, the points on either side not proved unstable
+    (a continued "unstable" is proved by the multiplier found outside) are
+    searched in full, and if a full search disagrees with a continued
+    verdict, the points before it are searched in full back to one that
+    agrees: every change the branch lists lies between a point searched in
+    full and one searched in full or proved unstable.
+    """
+    checks: dict = {}
+
+    def full(i: int):
+        return floquet(branch.solution(i), theta, **options)
+
+    for i in range(len(branch)):
+        checks[i] = full(i) if i == 0 else floquet(branch.solution(i), theta,
+                                                    guess=checks[i - 1], **options)
+        if i == 0 or checks[i].verdict == checks[i - 1].verdict:
+            continue
+        # a continued "unstable" is proved (a multiplier found outside); the others rest
+        # on continuity, and next to a change the full search decides
+        if checks[i].continued and checks[i].verdict != "unstable":
+            checks[i] = full(i)
+        k = i - 1
+        while k >= 0 and checks[k].continued and checks[k].verdict != "unstable":
+            verdict, checks[k] = checks[k].verdict, full(k)
+            if checks[k].verdict == verdict:
+                break
+            k -= 1
+    return checks
 
 
 def _solved(branch: Branch, value: float, guess: np.ndarray):
@@ -274,12 +317,14 @@ def _locate(branch: Branch, ends, theta, resolution, options):
         trial = _solved(branch, value, (1 - weight) * ca + weight * cb)
         if trial is None:
             break
-        result = floquet(trial, theta, **options)
+        # only the dominant multiplier's modulus places the change: continued from the
+        # nearer end of the bracket, whose two ends were searched in full
+        result = floquet(trial, theta, guess=left if weight < 0.5 else right, **options)
         f = np.log(abs(result.dominant))
         if (f > 0) == (fa > 0):
-            a, fa, ca = value, f, trial.coefficients[branch.harmonics:]
+            a, fa, ca, left = value, f, trial.coefficients[branch.harmonics:], result
         else:
-            b, fb, cb = value, f, trial.coefficients[branch.harmonics:]
+            b, fb, cb, right = value, f, trial.coefficients[branch.harmonics:], result
         if f > 0:
             unstable = result
     return a + fa / (fa - fb) * (b - a), unstable
