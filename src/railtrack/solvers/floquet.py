@@ -46,7 +46,8 @@ from ..equations.harmonic_balance import harmonic_system
 from ..equations.hill import bloch_phases, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
 from .floquet_assembly import TAIL_LIMIT, _distinct, floquet_result
-from .floquet_track import continue_exponents, newton_parts, one_blas_thread
+from .floquet_track import continue_exponents, newton_parts
+from .threads import one_blas_thread
 from .floquet_verdict import MIN_POINTS, NEUTRAL, Floquet
 from .solution import Solution
 

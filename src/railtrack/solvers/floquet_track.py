@@ -35,16 +35,14 @@ since for another to have reached it.  `Floquet.continued` marks it,
 
 from __future__ import annotations
 
-import functools
 
 import numpy as np
-from threadpoolctl import ThreadpoolController
 
 from ..equations.hill import hill_matrix_slope
 from ..model.passage import Passage
 from .contour import polish
 
-__all__ = ["continue_exponents", "newton_parts", "one_blas_thread"]
+__all__ = ["continue_exponents", "newton_parts"]
 
 TRACK_RESIDUAL = 1e-6
 """Largest relative residual ||H p|| / ||H|| of a continued exponent (as `RESIDUAL_LIMIT`)."""
@@ -112,23 +110,3 @@ def newton_parts(passage: Passage, toeplitz: np.ndarray, period: float, phases: 
             matrix(z, rows)
         return (kept["slope"] * p + p @ toeplitz[1].T) / period
     return matrix, derivative
-
-
-_CONTROLLER: list = []
-
-
-def one_blas_thread(function):
-    """`function` run with BLAS on one thread.
-
-    Hill's method solves many small matrices (51 to 122 rows); on more BLAS
-    threads than free cores OpenBLAS spins: the continued multipliers at
-    m = 60 took 10 times the CPU time with two threads on a busy 2-core
-    machine.  The controller is made once, on first use.
-    """
-    @functools.wraps(function)
-    def wrapper(*args, **kwargs):
-        if not _CONTROLLER:
-            _CONTROLLER.append(ThreadpoolController())
-        with _CONTROLLER[0].limit(limits=1, user_api="blas"):
-            return function(*args, **kwargs)
-    return wrapper

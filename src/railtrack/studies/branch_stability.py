@@ -35,7 +35,7 @@ import dataclasses
 import numpy as np
 
 from ..solvers.floquet import floquet
-from ..solvers.floquet_track import one_blas_thread
+from ..solvers.threads import one_blas_thread
 from ..solvers.solve import solve
 from .branch import Branch, StabilityChange, replaced
 from .stability import check_stability
