@@ -117,6 +117,18 @@ def test_progress_writes_only_when_asked(capsys):
         rt.random_support(TRACK, TRAIN, LAW, executor=object(), **options)
 
 
+
+def test_a_sweep_the_size_of_the_books_shows_no_progress(capsys):
+    # chapter 10 sweeps 10,000 members: a bar there is output nbval reads as changed
+    stiffness = np.linspace(15e6, 25e6, 10_000)
+    rt.sweep(TRACK, rt.Train.paper(), rt.CubicFoundation.paper(), 15,
+             stiffness=stiffness, stability="off")
+    shown = capsys.readouterr()
+    assert shown.out == "" and shown.err == ""
+    rt.sweep(TRACK, rt.Train.paper(), rt.CubicFoundation.paper(), 15,
+             stiffness=stiffness[:100], stability="off", progress=True)
+    assert "sweep" in capsys.readouterr().err
+
 def _blas_threads():
     return [pool["num_threads"] for pool in threadpool_info() if pool["user_api"] == "blas"]
 

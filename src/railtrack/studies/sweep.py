@@ -52,6 +52,9 @@ from .sweep_stability import member_stability, require_whole_sleepers, stability
 
 __all__ = ["Sweep", "sweep", "BLOCK", "MAX_RESULT_BYTES"]
 
+PROGRESS_MEMBERS = 50_000
+"""A sweep of this many members or more shows its progress unless told otherwise."""
+
 
 @dataclass(frozen=True, eq=False)
 class Sweep:
@@ -171,8 +174,9 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
         track of chapter 10 (480-545 m/s) and 280 ms on the paper's track
         (30-100 m/s), against 0.5-5 ms a member for the sweep itself.
     progress : bool or None
-        A ``tqdm`` bar over the blocks of `BLOCK` members: None shows it for
-        more than one block, True or False force it.
+        A ``tqdm`` bar over the blocks of `BLOCK` members: None shows it
+        from `PROGRESS_MEMBERS` members (10,000 solve in about a second),
+        True or False force it.
     executor : concurrent.futures.Executor, optional
         Runs the blocks (a ``ProcessPoolExecutor``, a Dask ``Client``);
         default: this process.  The results do not depend on it.
@@ -229,7 +233,7 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
         require_whole_sleepers(passage, size, values)
     m = harmonics if not automatic else predicted_harmonics(passage, law, size, accuracy)
     run = dict(passage=passage, law=law, size=size, tol=tol, max_iterations=max_iterations,
-               executor=executor, progress=show_progress(progress, size > BLOCK))
+               executor=executor, progress=show_progress(progress, size >= PROGRESS_MEMBERS))
     result = _solve(m, samples, None, automatic, **run)
     for _round in range(AUTO_ROUNDS if automatic else 0):
         worst = _worst(result)
