@@ -124,7 +124,8 @@ def auto_wheels(passage, cell, wheel, profile, groups: int, accuracy: float, tol
             break
         if m >= MAX_HARMONICS:
             break
-        previous, start = (m, force, fitting), (raw.contact_harmonics, raw.lift)
+        previous, start = (m, force, fitting), (raw.contact_harmonics, raw.lift,
+                                                  raw.coefficients[:, m:])
         if fitted:
             m = min(max(grown, harmonics_for(tail, fitting, AIM * accuracy, MAX_HARMONICS)),
                     MAX_HARMONICS)
