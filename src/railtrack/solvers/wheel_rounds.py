@@ -17,7 +17,7 @@ level's contact forces where there is one, at most `FAILED_LEVELS`
 failures in a row.  The message lists every m tried and what happened there.
 Every level after the first starts from the last converged one: its contact
 forces, lifts and sleepers' harmonics (the sleepers' inner solve from rest took
-5 Newton steps at every level of the hanging sleeper's search, 1 from there).
+5 Newton steps at every level of the hanging sleeper's search, 2-3 from there).
 """
 
 from __future__ import annotations
