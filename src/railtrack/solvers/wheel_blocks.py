@@ -47,28 +47,40 @@ def class_blocks(system, positive: np.ndarray, negative: np.ndarray):
     lmax = system.grid.size
     factor = system.load_gap[..., None] * system.sleeper_shift[:, None] * system.wheel_phase
     plus, minus = factor[:, :lmax], factor[:, lmax:]
-    under = (system.under_weight[..., None] * system.harmonic_phase
-             * np.conj(system.wheel_phase[:lmax, None]))                   # (l, 2m+1, K)
-    upper, lower = under[:, m:], under[:, m::-1]
-    s_plus, s_minus = system.load_mode[:lmax], system.load_mode[lmax:]
     reads = system.mode_of_wheel
-    branches = ((upper, positive, s_plus, plus, False, -1),
-                (lower, negative, s_minus, np.conj(minus), False, 1),
-                (upper, positive, s_minus, minus, True, -1),
-                (lower, negative, s_plus, np.conj(plus), True, 1))
+    # gathered once by class, so that each block reads contiguous slices: a gather per
+    # block from the (m+1, 2l, K) factor was 60 % of the blocks' time at m = 549
+    row_order, row_groups = _groups(reads)
+    under = (system.under_weight[row_order, :, None] * system.harmonic_phase
+             * np.conj(system.wheel_phase[row_order, None]))              # (l, 2m+1, K)
+    upper, lower = under[:, m:], under[:, m::-1]
+    plus_order, plus_groups = _groups(system.load_mode[:lmax])
+    minus_order, minus_groups = _groups(system.load_mode[lmax:])
+    plus, minus = plus[:, plus_order], minus[:, minus_order]
+    branches = ((upper, positive, plus_order, plus_groups, plus, False, -1),
+                (lower, negative, minus_order, minus_groups, np.conj(minus), False, 1),
+                (upper, positive, minus_order, minus_groups, minus, True, -1),
+                (lower, negative, plus_order, plus_groups, np.conj(plus), True, 1))
     blocks = []
-    for read in np.unique(reads):
-        rows = np.flatnonzero(reads == read)
-        for below, transfer, modes, load, conjugate, sign in branches:
+    for below, transfer, col_order, col_groups, load, conjugate, sign in branches:
+        for read, rows in row_groups.items():
             mode = (sign * read) % n_sl
-            cols = np.flatnonzero(modes == mode)
-            if cols.size == 0:
+            cols = col_groups.get(mode)
+            if cols is None:
                 continue
             left = below[rows] * transfer[:, read, mode][None, :, None]       # (R, n, K)
             left = np.transpose(left, (0, 2, 1)).reshape(-1, m + 1)
             right = load[:, cols, :].reshape(m + 1, -1)
-            blocks.append((rows, cols, left @ right, conjugate))
+            blocks.append((row_order[rows], col_order[cols], left @ right, conjugate))
     return blocks
+
+
+def _groups(keys: np.ndarray):
+    """The order that sorts ``keys`` (stable) and, per value, its slice of that order."""
+    order = np.argsort(keys, kind="stable")
+    values, starts = np.unique(keys[order], return_index=True)
+    ends = np.append(starts[1:], keys.size)
+    return order, {int(v): slice(int(a), int(b)) for v, a, b in zip(values, starts, ends)}
 
 
 def apply_blocks(system, blocks, forces: np.ndarray) -> np.ndarray:

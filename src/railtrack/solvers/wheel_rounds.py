@@ -15,6 +15,9 @@ converge does not end the search (issue 27: a 5 mm dip at 45 m/s fails at
 m = 60 and converges above): m grows past it, from the last converged
 level's contact forces where there is one, at most `FAILED_LEVELS`
 failures in a row.  The message lists every m tried and what happened there.
+Every level after the first starts from the last converged one: its contact
+forces, lifts and sleepers' harmonics (the sleepers' inner solve from rest took
+5 Newton steps at every level of the hanging sleeper's search, 2-3 from there).
 """
 
 from __future__ import annotations
@@ -124,7 +127,8 @@ def auto_wheels(passage, cell, wheel, profile, groups: int, accuracy: float, tol
             break
         if m >= MAX_HARMONICS:
             break
-        previous, start = (m, force, fitting), (raw.contact_harmonics, raw.lift)
+        previous, start = (m, force, fitting), (raw.contact_harmonics, raw.lift,
+                                                  raw.coefficients[:, m:])
         if fitted:
             m = min(max(grown, harmonics_for(tail, fitting, AIM * accuracy, MAX_HARMONICS)),
                     MAX_HARMONICS)

@@ -99,6 +99,15 @@ class WheelSolution:
         omega = 2 * np.pi * self.grid / self.period
         t = checked_times(omega, t)
         flat = t.ravel()
+        n = flat.size
+        if self.grid.size and n > 2 * int(self.grid[-1]) and np.allclose(
+                flat, np.arange(n) * (self.period / n), rtol=0.0, atol=1e-12 * self.period):
+            # n instants evenly over one period (auto's comparison, one_period, extremes):
+            # an inverse FFT, not the direct sum's n x l phases (0.1 s at m = 549, n = 4096)
+            spectrum = np.zeros((harmonics.shape[0], n // 2 + 1), dtype=complex)
+            spectrum[:, self.grid] = harmonics
+            return (n * np.fft.irfft(spectrum, n, axis=-1)).reshape(
+                (harmonics.shape[0],) + t.shape)
         out = np.empty((harmonics.shape[0], flat.size))
         step = chunk_length(omega.size)          # (times, lmax) blocks: bounded memory
         for start in range(0, flat.size, step):

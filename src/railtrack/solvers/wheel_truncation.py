@@ -55,7 +55,8 @@ def wheel_truncation(solution) -> float:
     top = max(min(TAIL_FACTOR * m, m + TAIL_MOST) // groups, m // groups + 1) * groups
     refined = solve_wheels(solution.passage, solution.sleepers.cell, solution.wheel,
                            solution.profile, top, tol=REFINE_TOL, max_iterations=REFINE_STEPS,
-                           start=(solution.contact_harmonics, solution.lift))
+                           start=(solution.contact_harmonics, solution.lift,
+                                  solution.sleepers.coefficients[:, m:]))
     finer = wrap(solution.passage, solution.wheel, solution.profile, refined)
     t = solution.one_period(POINTS)
     change = np.abs(finer.contact_force(t) - solution.contact_force(t))
