@@ -118,8 +118,10 @@ def test_the_hertz_tangent_is_the_derivative_of_the_contact_forces():
 @pytest.mark.parametrize("speed", [45.0, 100.0])
 def test_the_smooth_rail_matches_the_ring(speed):
     result = rt.solve(TRACK, train(speed), LAW, 180, wheel=rt.Wheel(600.0))
+    # tol 1e-4: 3 periods (8 and 6 at 1e-5); the compared extremes are 13.3 and 22.8 N
+    # off (12.9 and 21.6 N at 1e-5) against 50.8 and 139 N (measured)
     ring = rt.simulate_time_domain(TRACK, train(speed), LAW, 8, 3600, wheel=rt.Wheel(600.0),
-                                   tol=1e-5, warn_step_error=None)
+                                   tol=1e-4, warn_step_error=None)
     assert result.converged and ring.converged
     swing = ring.contact_forces.max(axis=0) - ring.contact_forces.min(axis=0)
     assert swing.min() > 500.0                      # the sleepers' passing is felt
