@@ -10,12 +10,13 @@ STUDY = pt.truncation_study(Passage.paper(), LinearFoundation.paper(), (18.0, 40
 
 
 def test_errors_are_measured_against_a_much_larger_m():
-    # for the linear law eq. (23) at m = 2000 is as good as exact
+    # for the linear law eq. (23) at m = 1000 is as good as exact: its error
+    # to m = 2000 on 20000 points moves `true` by 1e-7 of itself (measured)
     track, train = Track.paper(), Train.paper(wagon_length=40.0)
-    exact = solve(track, train, LinearFoundation.paper(), 2000, method="analytic")
+    exact = solve(track, train, LinearFoundation.paper(), 1000, method="analytic")
     with pytest.warns(UserWarning):
         truncated = solve(track, train, LinearFoundation.paper(), 15, method="analytic")
-    t = np.linspace(0.0, train.period, 20000, endpoint=False)
+    t = np.linspace(0.0, train.period, 8000, endpoint=False)
     w = exact.sleeper_displacement(t)
     true = np.max(np.abs(truncated.sleeper_displacement(t) - w)) / np.max(np.abs(w))
     assert STUDY.error_15[1] == pytest.approx(true, rel=0.01)

@@ -135,8 +135,10 @@ def test_the_hertz_tangent_is_the_derivative_of_the_contact_forces():
 @pytest.mark.parametrize("speed", [45.0, 100.0])
 def test_the_smooth_rail_matches_the_ring(speed):
     result = rt.solve(TRACK, train(speed), LAW, 180, wheel=rt.Wheel(600.0))
+    # tol 1e-4: 3 periods (8 and 6 at 1e-5); the compared extremes are 13.3 and 22.8 N
+    # off (12.9 and 21.6 N at 1e-5) against 50.8 and 139 N (measured)
     ring = rt.simulate_time_domain(TRACK, train(speed), LAW, 8, 3600, wheel=rt.Wheel(600.0),
-                                   tol=1e-5, warn_step_error=None)
+                                   tol=1e-4, warn_step_error=None)
     assert result.converged and ring.converged
     swing = ring.contact_forces.max(axis=0) - ring.contact_forces.min(axis=0)
     assert swing.min() > 500.0                      # the sleepers' passing is felt
@@ -149,8 +151,10 @@ def test_the_smooth_rail_matches_the_ring(speed):
 
 def test_the_dipped_weld_matches_the_ring():
     result = rt.solve(TRACK, train(45.0), LAW, 300, wheel=rt.Wheel(600.0), profile=DIP)
+    # the ring's tol 1e-4 (3 periods, 7 at 1e-5) moves its contact-force extremes by
+    # 0.5 N and the rest by < 3e-6 of themselves (measured)
     ring = rt.simulate_time_domain(TRACK, train(45.0), LAW, 8, 3600, wheel=rt.Wheel(600.0),
-                                   profile=DIP, tol=1e-5, warn_step_error=None)
+                                   profile=DIP, tol=1e-4, warn_step_error=None)
     assert result.converged and ring.converged
     extremes = result.extremes()
     np.testing.assert_allclose(extremes["max"], ring.contact_forces.max(axis=0), atol=100.0)
@@ -185,8 +189,10 @@ def test_a_wheel_that_leaves_the_rail_lands_as_in_the_ring():
     deep = rt.CosineDip(2e-3, 1.0, 18.0, centre=9.3)
     # the landing wants more harmonics than the dip alone: m = 300 is 0.45 kN off there
     result = rt.solve(track, train(80.0), ballast, 450, wheel=rt.Wheel(600.0), profile=deep)
+    # the ring's tol 1e-4 (4 periods, 7 at 1e-5) leaves the flight times as they were
+    # and moves its peak forces by < 5 N (measured)
     ring = rt.simulate_time_domain(track, train(80.0), ballast, 8, 7200, wheel=rt.Wheel(600.0),
-                                   profile=deep, tol=1e-5, warn_step_error=None)
+                                   profile=deep, tol=1e-4, warn_step_error=None)
     assert result.converged and ring.converged
     share, longest = result.loss_of_contact()
     ring_share, ring_longest = ring.loss_of_contact()
