@@ -153,7 +153,7 @@ test: $(STAMP) $(MATHJAX)
 	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1 \
 	  $(PY) -m pytest -n $(TEST_WORKERS) --dist loadscope tests $$notebooks \
 	    --nbval --nbval-current-env --nbval-sanitize-with $(SANITIZE) \
-	    --nbval-cell-timeout=$(NB_TIMEOUT) || status=1; \
+	    --nbval-cell-timeout=$(NB_TIMEOUT) --durations=25 || status=1; \
 	echo "== the book from its stored outputs, Sphinx warnings and broken references as errors"; \
 	{ $(call edition,stored,$(STORED)); } || status=1; \
 	echo "== headless Chromium on every page of that build (tests/rendered)"; \
