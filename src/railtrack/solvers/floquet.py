@@ -47,7 +47,7 @@ from ..equations.hill import bloch_phases, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
 from .floquet_assembly import TAIL_LIMIT, _distinct, floquet_result
 from .floquet_track import continue_exponents, newton_parts
-from .threads import one_blas_thread
+from .threads import blas_threads
 from .floquet_verdict import MIN_POINTS, NEUTRAL, Floquet
 from .solution import Solution
 
@@ -78,7 +78,6 @@ def _base_phases(theta, sleepers: int) -> np.ndarray:
     return values.astype(float)
 
 
-@one_blas_thread
 def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
             min_multiplier: float = 1e-2, max_multiplier: float = 1e6,
             points: int = 24, shifts: bool = True, guess: Floquet | None = None) -> Floquet:
@@ -151,106 +150,107 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
     >>> result.stable, bool(abs(result.dominant) < 0.1)
     (True, True)
     """
-    if not isinstance(solution, Solution) and callable(getattr(solution, "solution", None)):
-        name = type(solution).__name__
-        raise TypeError(f"floquet takes one periodic solution; got a {name}, which holds many: "
-                        f"pass {name.lower()}.solution(i) for one of them (rt.check_branch "
-                        "judges every point of a Branch, sweep(..., stability='full') every "
-                        "member of a sweep)")
-    if isinstance(points, bool) or not isinstance(points, (int, np.integer)) or points < 1:
-        raise ValueError(f"points must be an integer >= 1 (contour quadrature points; "
-                         f"{MIN_POINTS} or more can prove stability); got {points!r}")
-    if hasattr(solution, "wheel"):
-        raise TypeError(
-            "floquet does not compute the multipliers of a WheelSolution (the wheels' own motion "
-            "is part of every disturbance); judge it with the time-domain ring instead: "
-            "rt.simulate_time_domain(track, train, law, ..., wheel=...)")
-    if callable(getattr(solution, "floquet", None)):
-        # a CellSolution: Hill's matrix of its cell (railtrack.solvers.cell_floquet)
-        return solution.floquet(theta, harmonics=harmonics, min_multiplier=min_multiplier,
-                                max_multiplier=max_multiplier, points=points, shifts=shifts)
-    if not all(hasattr(solution, name) for name in ("converged", "passage", "coefficients")):
-        raise TypeError("floquet takes a converged railtrack.Solution (from rt.solve); got "
-                        f"{type(solution).__name__}")
-    if not solution.converged:
-        raise ValueError("the Floquet multipliers of an unconverged solution mean nothing: "
-                         f"it did not converge ({solution.message})")
-    if not all(isinstance(x, numbers.Real) and not isinstance(x, bool)
-               for x in (min_multiplier, max_multiplier)) \
-            or not (0 < min_multiplier < 1 < max_multiplier < np.inf):
-        raise ValueError("need 0 < min_multiplier < 1 < max_multiplier < inf; got "
-                         f"{min_multiplier!r}, {max_multiplier!r}")
-    passage = solution.passage
-    m = solution.harmonics if harmonics is None else harmonics
-    if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < solution.harmonics:
-        raise ValueError(f"harmonics must be an integer >= the solution's {solution.harmonics}; "
-                         f"got {harmonics!r}")
-    sleepers = bloch_phases(passage).size
-    bases = _base_phases(theta, sleepers)
-    system = harmonic_system(passage, solution.foundation, int(m))
-    coefficients = np.zeros(m + 1, dtype=complex)
-    coefficients[: solution.harmonics + 1] = solution.coefficients[solution.harmonics:]
-    toeplitz = tangent_toeplitz(*tangent_harmonics(system, coefficients))
-    period = float(passage.wagon_length / passage.speed)
-    low, high = np.log(min_multiplier), np.log(max_multiplier)
-    center, semi_axes = 0.5 * (low + high), (0.55 * (high - low) + 0.5, 1.5 * np.pi)
-    # A resolved exponent lives on |k| <= band (its tail above is under TAIL_LIMIT), so the
-    # contours search Hill's matrix cut to that band, about half the cost; Newton then
-    # refines every candidate with all 2m + 1 harmonics.
-    band = m - max(1, (2 * m + 1) // 10)
-    top = np.abs(np.arange(-m, m + 1)) > band
-    search = toeplitz[:, m - band:m + band + 1, m - band:m + band + 1]
-    if guess is not None:
-        continued = _continued(guess, passage, toeplitz, period, bases, (low, high), top)
-        if continued is not None:
-            return floquet_result(_distinct(continued[0]), bases, sleepers, m, period,
-                                  min_multiplier, solution, max_multiplier=max_multiplier,
-                                  points=points, shifts=shifts, guess=guess, ceiling=continued[1])
-    candidates, found = [], []
-    for base in bases:
-        phases = bloch_phases(passage, base) if shifts else np.array([float(base)])
-        # Conjugation maps the exponents of phase theta onto those of -theta: where the
-        # family holds both, the phases above pi are the mirror images of those below.
-        mirrored = _mirrored(phases)
-        solved = phases[phases <= np.pi + 1e-12] if mirrored else phases
+    with blas_threads(1):
+        if not isinstance(solution, Solution) and callable(getattr(solution, "solution", None)):
+            name = type(solution).__name__
+            raise TypeError(f"floquet takes one periodic solution; got a {name}, which holds many: "
+                            f"pass {name.lower()}.solution(i) for one of them (rt.check_branch "
+                            "judges every point of a Branch, sweep(..., stability='full') every "
+                            "member of a sweep)")
+        if isinstance(points, bool) or not isinstance(points, (int, np.integer)) or points < 1:
+            raise ValueError(f"points must be an integer >= 1 (contour quadrature points; "
+                             f"{MIN_POINTS} or more can prove stability); got {points!r}")
+        if hasattr(solution, "wheel"):
+            raise TypeError(
+                "floquet does not compute the multipliers of a WheelSolution (the wheels' own motion "
+                "is part of every disturbance); judge it with the time-domain ring instead: "
+                "rt.simulate_time_domain(track, train, law, ..., wheel=...)")
+        if callable(getattr(solution, "floquet", None)):
+            # a CellSolution: Hill's matrix of its cell (railtrack.solvers.cell_floquet)
+            return solution.floquet(theta, harmonics=harmonics, min_multiplier=min_multiplier,
+                                    max_multiplier=max_multiplier, points=points, shifts=shifts)
+        if not all(hasattr(solution, name) for name in ("converged", "passage", "coefficients")):
+            raise TypeError("floquet takes a converged railtrack.Solution (from rt.solve); got "
+                            f"{type(solution).__name__}")
+        if not solution.converged:
+            raise ValueError("the Floquet multipliers of an unconverged solution mean nothing: "
+                             f"it did not converge ({solution.message})")
+        if not all(isinstance(x, numbers.Real) and not isinstance(x, bool)
+                   for x in (min_multiplier, max_multiplier)) \
+                or not (0 < min_multiplier < 1 < max_multiplier < np.inf):
+            raise ValueError("need 0 < min_multiplier < 1 < max_multiplier < inf; got "
+                             f"{min_multiplier!r}, {max_multiplier!r}")
+        passage = solution.passage
+        m = solution.harmonics if harmonics is None else harmonics
+        if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < solution.harmonics:
+            raise ValueError(f"harmonics must be an integer >= the solution's {solution.harmonics}; "
+                             f"got {harmonics!r}")
+        sleepers = bloch_phases(passage).size
+        bases = _base_phases(theta, sleepers)
+        system = harmonic_system(passage, solution.foundation, int(m))
+        coefficients = np.zeros(m + 1, dtype=complex)
+        coefficients[: solution.harmonics + 1] = solution.coefficients[solution.harmonics:]
+        toeplitz = tangent_toeplitz(*tangent_harmonics(system, coefficients))
+        period = float(passage.wagon_length / passage.speed)
+        low, high = np.log(min_multiplier), np.log(max_multiplier)
+        center, semi_axes = 0.5 * (low + high), (0.55 * (high - low) + 0.5, 1.5 * np.pi)
+        # A resolved exponent lives on |k| <= band (its tail above is under TAIL_LIMIT), so the
+        # contours search Hill's matrix cut to that band, about half the cost; Newton then
+        # refines every candidate with all 2m + 1 harmonics.
+        band = m - max(1, (2 * m + 1) // 10)
+        top = np.abs(np.arange(-m, m + 1)) > band
+        search = toeplitz[:, m - band:m + band + 1, m - band:m + band + 1]
+        if guess is not None:
+            continued = _continued(guess, passage, toeplitz, period, bases, (low, high), top)
+            if continued is not None:
+                return floquet_result(_distinct(continued[0]), bases, sleepers, m, period,
+                                      min_multiplier, solution, max_multiplier=max_multiplier,
+                                      points=points, shifts=shifts, guess=guess, ceiling=continued[1])
+        candidates, found = [], []
+        for base in bases:
+            phases = bloch_phases(passage, base) if shifts else np.array([float(base)])
+            # Conjugation maps the exponents of phase theta onto those of -theta: where the
+            # family holds both, the phases above pi are the mirror images of those below.
+            mirrored = _mirrored(phases)
+            solved = phases[phases <= np.pi + 1e-12] if mirrored else phases
 
-        # Phases in groups whose stack of matrices stays under MEMORY_BYTES.
-        size = 16 * points * search.shape[-1] ** 2 * 4   # the stack and its working copies
-        group = max(1, int(MEMORY_BYTES // size))
-        pairs = []
-        for start in range(0, solved.size, group):
-            def matrix(z, phase=solved[start:start + group, None]):
-                return hill_matrix(passage, search, np.asarray(z) / period, phase)
-            pairs += contour_eigenpairs(matrix, center, semi_axes, points)
-        for phase, (values, vectors) in zip(solved, pairs):
-            near = (np.abs(values.imag) <= np.pi + 0.5) & (values.real >= low - 0.5) \
-                & (values.real <= high + 0.5)
-            padded = np.zeros((2 * m + 1, vectors.shape[1]), dtype=complex)
-            padded[m - band:m + band + 1] = vectors
-            candidates += [(z, p, phase, base, mirrored) for z, p in zip(values[near],
-                                                                         padded.T[near])]
-    if candidates:
-        z0, p0, phase, base, mirrored = (np.array(column) for column in zip(*candidates))
+            # Phases in groups whose stack of matrices stays under MEMORY_BYTES.
+            size = 16 * points * search.shape[-1] ** 2 * 4   # the stack and its working copies
+            group = max(1, int(MEMORY_BYTES // size))
+            pairs = []
+            for start in range(0, solved.size, group):
+                def matrix(z, phase=solved[start:start + group, None]):
+                    return hill_matrix(passage, search, np.asarray(z) / period, phase)
+                pairs += contour_eigenpairs(matrix, center, semi_axes, points)
+            for phase, (values, vectors) in zip(solved, pairs):
+                near = (np.abs(values.imag) <= np.pi + 0.5) & (values.real >= low - 0.5) \
+                    & (values.real <= high + 0.5)
+                padded = np.zeros((2 * m + 1, vectors.shape[1]), dtype=complex)
+                padded[m - band:m + band + 1] = vectors
+                candidates += [(z, p, phase, base, mirrored) for z, p in zip(values[near],
+                                                                             padded.T[near])]
+        if candidates:
+            z0, p0, phase, base, mirrored = (np.array(column) for column in zip(*candidates))
 
-        # Newton on the candidates in groups, so that the bordered matrices stay under
-        # MEMORY_BYTES; each candidate's iteration is its own, so grouping changes nothing.
-        chunk = max(1, int(MEMORY_BYTES // (16 * 4 * (2 * m + 2) ** 2)))
-        parts = []
-        for start in range(0, z0.size, chunk):
-            rows = np.arange(start, min(start + chunk, z0.size))
-            matrix, slope = newton_parts(passage, toeplitz, period, phase[rows])
-            parts.append(polish(matrix, z0[rows], p0[rows], slope))
-        values, vectors, residuals = (np.concatenate(part) for part in zip(*parts))
-        # A real negative multiplier sits on the strip's edge, Im z = +-pi, where
-        # round-off decides the side: accept both edges, fold them onto (-pi, pi].
-        inside = (np.abs(values.imag) <= np.pi + EDGE) & (values.real >= low) \
-            & (values.real <= high) & (residuals < RESIDUAL_LIMIT)
-        values = values.real + 1j * (np.pi - np.mod(np.pi - values.imag, 2 * np.pi))
-        tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
-        for i in np.flatnonzero(inside):
-            found += _with_mirror(values[i], phase[i], tails[i], base[i], vectors[i], mirrored[i])
-    return floquet_result(_distinct(found), bases, sleepers, m, period, min_multiplier, solution,
-                          max_multiplier=max_multiplier, points=points, shifts=shifts)
+            # Newton on the candidates in groups, so that the bordered matrices stay under
+            # MEMORY_BYTES; each candidate's iteration is its own, so grouping changes nothing.
+            chunk = max(1, int(MEMORY_BYTES // (16 * 4 * (2 * m + 2) ** 2)))
+            parts = []
+            for start in range(0, z0.size, chunk):
+                rows = np.arange(start, min(start + chunk, z0.size))
+                matrix, slope = newton_parts(passage, toeplitz, period, phase[rows])
+                parts.append(polish(matrix, z0[rows], p0[rows], slope))
+            values, vectors, residuals = (np.concatenate(part) for part in zip(*parts))
+            # A real negative multiplier sits on the strip's edge, Im z = +-pi, where
+            # round-off decides the side: accept both edges, fold them onto (-pi, pi].
+            inside = (np.abs(values.imag) <= np.pi + EDGE) & (values.real >= low) \
+                & (values.real <= high) & (residuals < RESIDUAL_LIMIT)
+            values = values.real + 1j * (np.pi - np.mod(np.pi - values.imag, 2 * np.pi))
+            tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
+            for i in np.flatnonzero(inside):
+                found += _with_mirror(values[i], phase[i], tails[i], base[i], vectors[i], mirrored[i])
+        return floquet_result(_distinct(found), bases, sleepers, m, period, min_multiplier, solution,
+                              max_multiplier=max_multiplier, points=points, shifts=shifts)
 
 
 def _with_mirror(z, phase, tail, base, vector, mirrored) -> list:

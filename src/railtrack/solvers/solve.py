@@ -52,7 +52,7 @@ from .speed_path import not_converged_advice, speed_path
 from ..model.passage import Passage
 from ..model.track import Track
 from ..model.train import Train
-from .threads import one_blas_thread
+from .threads import blas_threads
 from .truncation import estimate_of
 
 __all__ = ["solve", "METHODS", "DEFAULT_ACCURACY", "WARN_TRUNCATION"]
@@ -90,7 +90,6 @@ METHODS = {"newton": _newton, "fixed-point": _fixed_point, "analytic": _analytic
 """Method name -> function(system, tol, max_iterations, split, initial) -> SolverOutcome."""
 
 
-@one_blas_thread
 def solve(
     track: Track,
     train: Train,
@@ -217,98 +216,99 @@ def solve(
     (True, True)
     >>> w = solution.sleeper_displacement([0.0, 0.1])    # metres, w < 0 is down
     """
-    stability = checked_stability(stability)
-    if wheel is not None:
-        return solve_track_wheels(track, train, foundation, wheel, profile, harmonics, method,
-                                  accuracy=accuracy, tol=tol, max_iterations=max_iterations,
-                                  split=split, samples=samples, initial=initial, strict=strict,
-                                  check_foundation=check_foundation, fallback=fallback,
-                                  stability=stability)
-    if profile is not None:
-        raise ValueError("a profile is felt through wheels: pass wheel=railtrack.Wheel(...)")
-    if isinstance(foundation, SleeperCell):
-        return solve_track_cell(track, train, foundation, harmonics, method, accuracy=accuracy,
-                                tol=tol, max_iterations=max_iterations, samples=samples,
-                                initial=initial, strict=strict, stability=stability,
-                                check_foundation=check_foundation, split=split,
-                                fallback=fallback)
-    fallback = True if fallback is None else fallback
-    if method not in METHODS:
-        raise ValueError(f"method must be one of {sorted(METHODS)}; got {method!r}")
-    passage = Passage(track, train)
-    require_scalar_fields(track, train)
-    check_conditioning(passage)
-    automatic = isinstance(harmonics, str) and harmonics == "auto"
-    if not automatic:
-        require_count("harmonics", harmonics, 1)
-    check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split)
-    accuracy = checked_accuracy(accuracy, automatic)
-    tol = checked_tol(tol, DEFAULT_TOL)
-    if max_iterations is not None:
-        max_iterations = require_count("max_iterations", max_iterations, 0)
-    foundation = as_foundation(foundation)
-    check_laws_at_rest([foundation], [float(passage.pad_stiffness)],
-                       [float(passage.pad_damping)], check_foundation)
+    with blas_threads(1):
+        stability = checked_stability(stability)
+        if wheel is not None:
+            return solve_track_wheels(track, train, foundation, wheel, profile, harmonics, method,
+                                      accuracy=accuracy, tol=tol, max_iterations=max_iterations,
+                                      split=split, samples=samples, initial=initial, strict=strict,
+                                      check_foundation=check_foundation, fallback=fallback,
+                                      stability=stability)
+        if profile is not None:
+            raise ValueError("a profile is felt through wheels: pass wheel=railtrack.Wheel(...)")
+        if isinstance(foundation, SleeperCell):
+            return solve_track_cell(track, train, foundation, harmonics, method, accuracy=accuracy,
+                                    tol=tol, max_iterations=max_iterations, samples=samples,
+                                    initial=initial, strict=strict, stability=stability,
+                                    check_foundation=check_foundation, split=split,
+                                    fallback=fallback)
+        fallback = True if fallback is None else fallback
+        if method not in METHODS:
+            raise ValueError(f"method must be one of {sorted(METHODS)}; got {method!r}")
+        passage = Passage(track, train)
+        require_scalar_fields(track, train)
+        check_conditioning(passage)
+        automatic = isinstance(harmonics, str) and harmonics == "auto"
+        if not automatic:
+            require_count("harmonics", harmonics, 1)
+        check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split)
+        accuracy = checked_accuracy(accuracy, automatic)
+        tol = checked_tol(tol, DEFAULT_TOL)
+        if max_iterations is not None:
+            max_iterations = require_count("max_iterations", max_iterations, 0)
+        foundation = as_foundation(foundation)
+        check_laws_at_rest([foundation], [float(passage.pad_stiffness)],
+                           [float(passage.pad_damping)], check_foundation)
 
-    m, target, spectrum, system, initial = first_system(
-        passage, foundation, harmonics, automatic, method, accuracy, samples, initial)
+        m, target, spectrum, system, initial = first_system(
+            passage, foundation, harmonics, automatic, method, accuracy, samples, initial)
 
-    iterations, path = 0, None
-    for _round in range(AUTO_ROUNDS + 1):
-        outcome, used_split, note = run_method(METHODS, method, system, tol, max_iterations,
-                                               split, initial)
-        iterations += outcome.iterations
-        if (fallback and method == "newton" and not outcome.converged and initial is None
-                and max_iterations is None and path is None):
-            path = speed_path(system, tol, 100)
-            if path.outcome is not None:
-                outcome = path.outcome._replace(message=f"{path.outcome.message}; "
-                                                f"{path.describe(float(passage.speed))}")
-                iterations += outcome.iterations
-        estimate, tail = estimate_of(system, outcome.coefficients, spectrum)
-        if not automatic or not outcome.converged or tail is None:
-            break
-        grown = next_system(passage, foundation, method, m, target, estimate, accuracy,
-                            outcome.coefficients, tail, spectrum)
-        if grown is None:
-            break
-        m, spectrum, system, initial = grown
-        target = m
+        iterations, path = 0, None
+        for _round in range(AUTO_ROUNDS + 1):
+            outcome, used_split, note = run_method(METHODS, method, system, tol, max_iterations,
+                                                   split, initial)
+            iterations += outcome.iterations
+            if (fallback and method == "newton" and not outcome.converged and initial is None
+                    and max_iterations is None and path is None):
+                path = speed_path(system, tol, 100)
+                if path.outcome is not None:
+                    outcome = path.outcome._replace(message=f"{path.outcome.message}; "
+                                                    f"{path.describe(float(passage.speed))}")
+                    iterations += outcome.iterations
+            estimate, tail = estimate_of(system, outcome.coefficients, spectrum)
+            if not automatic or not outcome.converged or tail is None:
+                break
+            grown = next_system(passage, foundation, method, m, target, estimate, accuracy,
+                                outcome.coefficients, tail, spectrum)
+            if grown is None:
+                break
+            m, spectrum, system, initial = grown
+            target = m
 
-    message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
-    if path is not None and path.outcome is None:
-        message += f"; {path.describe(float(passage.speed))}"
-    if automatic:
-        message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
-                    f"estimated truncation error {estimate:.1e})")
-    limit = truncation_limit(automatic, accuracy)
-    if outcome.converged and np.isfinite(estimate) and estimate > limit:
-        warnings.warn(truncation_warning(passage, foundation, m, estimate, automatic),
-                      stacklevel=2)
-    solution = Solution(
-        passage=passage,
-        foundation=foundation,
-        harmonics=system.harmonics,
-        coefficients=two_sided(outcome.coefficients),
-        method=method,
-        converged=outcome.converged,
-        iterations=iterations,
-        residual_history=outcome.residual_history,
-        message=message,
-        split=used_split,
-        samples=system.samples,
-        truncation_error=estimate,
-    )
-    if strict and not solution.converged:
-        raise convergence_error(method, outcome, solution, message)
-    judged = look_at_stability(solution, stability, stacklevel=4)
-    if judged is not None:
-        solution = dataclasses.replace(solution, stability=judged)
-    budget_spent = max_iterations is not None and outcome.iterations >= max_iterations
-    if not solution.converged and not budget_spent:
-        # an explicit max_iterations that runs out is the caller's budget (the
-        # paper's k = 100 fixed-point steps): converged=False says so, quietly
-        warnings.warn(ConvergenceWarning(not_converged_advice(
-            method, message, passage, system.harmonics, stalled="line search" in outcome.message
-            or path is not None)), stacklevel=2)
-    return solution
+        message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
+        if path is not None and path.outcome is None:
+            message += f"; {path.describe(float(passage.speed))}"
+        if automatic:
+            message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
+                        f"estimated truncation error {estimate:.1e})")
+        limit = truncation_limit(automatic, accuracy)
+        if outcome.converged and np.isfinite(estimate) and estimate > limit:
+            warnings.warn(truncation_warning(passage, foundation, m, estimate, automatic),
+                          stacklevel=2)
+        solution = Solution(
+            passage=passage,
+            foundation=foundation,
+            harmonics=system.harmonics,
+            coefficients=two_sided(outcome.coefficients),
+            method=method,
+            converged=outcome.converged,
+            iterations=iterations,
+            residual_history=outcome.residual_history,
+            message=message,
+            split=used_split,
+            samples=system.samples,
+            truncation_error=estimate,
+        )
+        if strict and not solution.converged:
+            raise convergence_error(method, outcome, solution, message)
+        judged = look_at_stability(solution, stability, stacklevel=4)
+        if judged is not None:
+            solution = dataclasses.replace(solution, stability=judged)
+        budget_spent = max_iterations is not None and outcome.iterations >= max_iterations
+        if not solution.converged and not budget_spent:
+            # an explicit max_iterations that runs out is the caller's budget (the
+            # paper's k = 100 fixed-point steps): converged=False says so, quietly
+            warnings.warn(ConvergenceWarning(not_converged_advice(
+                method, message, passage, system.harmonics, stalled="line search" in outcome.message
+                or path is not None)), stacklevel=2)
+        return solution

@@ -10,8 +10,12 @@ and 1.0 s on one (issue 28).  `blas_threads` limits BLAS (OpenBLAS, MKL,
 BLIS) to `limit` threads inside a ``with`` block and restores the caller's
 setting after it, so a user's default setup is not the slow one; work that
 scales (many draws) is spread over processes or threads by an executor
-instead (`railtrack.solvers.chunk_map`).  `one_blas_thread` puts the public
-entry points (`railtrack.solve`, the Floquet multipliers, the studies) under it.
+instead (`railtrack.solvers.chunk_map`).  The public entry points
+(`railtrack.solve`, `railtrack.floquet`, `railtrack.check_branch`,
+`railtrack.continuation`, the ring and the speed ramp) run their bodies
+under it; a ``with`` in the body, not a decorator, so that their warnings
+still name the caller's line (a wrapper would add a frame to every
+``stacklevel``).
 
 threadpoolctl's ``threadpool_limits`` scans the loaded libraries at every
 call (about 1 ms, as long as the paper's whole solve); one controller, made
@@ -20,17 +24,11 @@ at first use, switches them in about 10 microseconds.
 
 from __future__ import annotations
 
-import functools
-from collections.abc import Callable
-from typing import TypeVar
-
 from threadpoolctl import ThreadpoolController
 
-__all__ = ["blas_threads", "one_blas_thread"]
+__all__ = ["blas_threads"]
 
 _CONTROLLER: list[ThreadpoolController] = []
-
-F = TypeVar("F", bound=Callable)
 
 
 def _controller() -> ThreadpoolController:
@@ -53,22 +51,3 @@ def blas_threads(limit: int = 1):
     """
     return _controller().limit(limits=int(limit), user_api="blas")
 
-
-def one_blas_thread(function: F) -> F:
-    """Decorate a public entry point so that it runs under ``blas_threads(1)``.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> @one_blas_thread
-    ... def threads():
-    ...     from threadpoolctl import threadpool_info
-    ...     return {i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"}
-    >>> threads() <= {1}
-    True
-    """
-    @functools.wraps(function)
-    def limited(*args, **kwargs):
-        with blas_threads(1):
-            return function(*args, **kwargs)
-    return limited  # type: ignore[return-value]

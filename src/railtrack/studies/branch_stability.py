@@ -35,7 +35,7 @@ import dataclasses
 import numpy as np
 
 from ..solvers.floquet import floquet
-from ..solvers.threads import one_blas_thread
+from ..solvers.threads import blas_threads
 from ..solvers.solve import solve
 from .branch import Branch, StabilityChange, replaced
 from .stability import check_stability
@@ -212,47 +212,47 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
                                checks=dict(sorted(checks.items())))
 
 
-@one_blas_thread
 def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) -> Branch:
     """`check_branch` by Hill's method: every point, then each change located."""
-    # The verdict needs only the dominant multiplier, which 16 contour points find
-    # as 48 do at every point of chapter 10's fold branch (tests/test_floquet.py);
-    # the full set of multipliers needs `floquet`'s default 24.
-    options.setdefault("points", VERDICT_POINTS)
-    checks = _continued_checks(branch, theta, options)
-    stable = np.array([checks[i].stable for i in range(len(branch))], dtype=object)
-    verdicts = [checks[i].verdict for i in range(len(branch))]
-    dominant = np.array([checks[i].dominant for i in range(len(branch))])
-    folds = {fold.index: fold for fold in branch.folds}
-    changes = []
-    values = np.asarray(branch.values, dtype=float)
-    # A change is located only between a point shown stable and one shown unstable: next
-    # to an "unknown" point the search could have missed what would place it.
-    for i in range(len(branch) - 1):
-        if {verdicts[i], verdicts[i + 1]} != {"stable", "unstable"}:
-            continue
-        ends = [(values[k], branch.coefficients[k], checks[k]) for k in (i, i + 1)]
-        kind = None
-        if i in folds:
-            # At the fold a real multiplier passes +1; stability changes there unless
-            # another multiplier is still outside on the stable side.  A point just
-            # past the fold on that side tells.
-            steady = i if verdicts[i] == "stable" else i + 1
-            near = folds[i].value + FOLD_STEP * (values[steady] - folds[i].value)
-            trial = _solved(branch, near, branch.coefficients[steady])
-            past = None if trial is None else floquet(trial, theta, guess=checks[steady],
-                                                      **options)
-            if past is None or past.verdict != "unstable":
-                kind, value, frequency, phase = "fold", folds[i].value, 0.0, 0.0
-            else:
-                ends[1 - (steady - i)] = (near, trial.coefficients[branch.harmonics:], past)
-        if kind is None:
-            value, unstable = _locate(branch, ends, theta, resolution, options)
-            kind, frequency, phase = unstable.kind, unstable.frequency, unstable.theta
-        changes.append(StabilityChange(float(value), i, kind, float(frequency), float(phase),
-                                       bool(stable[i + 1])))
-    return dataclasses.replace(branch, stable=stable, checks=checks, multipliers=dominant,
-                               changes=tuple(changes))
+    with blas_threads(1):
+        # The verdict needs only the dominant multiplier, which 16 contour points find
+        # as 48 do at every point of chapter 10's fold branch (tests/test_floquet.py);
+        # the full set of multipliers needs `floquet`'s default 24.
+        options.setdefault("points", VERDICT_POINTS)
+        checks = _continued_checks(branch, theta, options)
+        stable = np.array([checks[i].stable for i in range(len(branch))], dtype=object)
+        verdicts = [checks[i].verdict for i in range(len(branch))]
+        dominant = np.array([checks[i].dominant for i in range(len(branch))])
+        folds = {fold.index: fold for fold in branch.folds}
+        changes = []
+        values = np.asarray(branch.values, dtype=float)
+        # A change is located only between a point shown stable and one shown unstable: next
+        # to an "unknown" point the search could have missed what would place it.
+        for i in range(len(branch) - 1):
+            if {verdicts[i], verdicts[i + 1]} != {"stable", "unstable"}:
+                continue
+            ends = [(values[k], branch.coefficients[k], checks[k]) for k in (i, i + 1)]
+            kind = None
+            if i in folds:
+                # At the fold a real multiplier passes +1; stability changes there unless
+                # another multiplier is still outside on the stable side.  A point just
+                # past the fold on that side tells.
+                steady = i if verdicts[i] == "stable" else i + 1
+                near = folds[i].value + FOLD_STEP * (values[steady] - folds[i].value)
+                trial = _solved(branch, near, branch.coefficients[steady])
+                past = None if trial is None else floquet(trial, theta, guess=checks[steady],
+                                                          **options)
+                if past is None or past.verdict != "unstable":
+                    kind, value, frequency, phase = "fold", folds[i].value, 0.0, 0.0
+                else:
+                    ends[1 - (steady - i)] = (near, trial.coefficients[branch.harmonics:], past)
+            if kind is None:
+                value, unstable = _locate(branch, ends, theta, resolution, options)
+                kind, frequency, phase = unstable.kind, unstable.frequency, unstable.theta
+            changes.append(StabilityChange(float(value), i, kind, float(frequency), float(phase),
+                                           bool(stable[i + 1])))
+        return dataclasses.replace(branch, stable=stable, checks=checks, multipliers=dominant,
+                                   changes=tuple(changes))
 
 
 def _continued_checks(branch: Branch, theta, options) -> dict:
@@ -274,8 +274,12 @@ def _continued_checks(branch: Branch, theta, options) -> dict:
         return floquet(branch.solution(i), theta, **options)
 
     for i in range(len(branch)):
-        checks[i] = full(i) if i == 0 else floquet(branch.solution(i), theta,
-                                                    guess=checks[i - 1], **options)
+        # a result without eigenvectors (e.g. one whose search found no exponent to
+        # continue) gives the next point nothing to start from: it is searched in full
+        previous = checks.get(i - 1)
+        continuable = previous is not None and previous.vectors is not None
+        checks[i] = floquet(branch.solution(i), theta, guess=previous, **options) \
+            if continuable else full(i)
         if i == 0 or checks[i].verdict == checks[i - 1].verdict:
             continue
         # a continued "unstable" is proved (a multiplier found outside); the others rest

@@ -36,7 +36,7 @@ from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..solvers.solution import ConvergenceWarning, TruncationWarning
 from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION, solve
-from ..solvers.threads import one_blas_thread
+from ..solvers.threads import blas_threads
 from ..solvers.truncation import (MAX_AUTO_HARMONICS, TAIL_FACTOR, estimate_of,
                                   grown_harmonics, predict_harmonics, track_spectrum)
 
@@ -88,7 +88,6 @@ def _fold(problem, u, tangent, ds, slope, tol, max_steps):
     return found
 
 
-@one_blas_thread
 def continuation(track, train, foundation, parameter: str = "speed", start=None, stop=None,
                  harmonics: int | str = "auto", step: float | None = None, max_points: int = 400,
                  tol: float = 1e-10, *, accuracy: float | None = None,
@@ -159,63 +158,64 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
     >>> bool(branch.converged.all()), float(branch.values[-1]), len(branch.folds)
     (True, 1.0, 0)
     """
-    if isinstance(foundation, SleeperCell):
-        raise TypeError(
-            f"continuation follows one law under every sleeper; foundation is a SleeperCell of "
-            f"{foundation.sleepers} sleepers.  Solve the cell at each value instead, "
-            "rt.solve(track, train.replace(speed=v), cell); if its sleepers are all alike, pass "
-            "their one law, cell.foundations[0], to continuation or rt.sweep")
-    if not isinstance(parameter, str):
-        raise ValueError(f"parameter must be the name of a field; got {parameter!r}")
-    check_parameter(track, train, foundation, parameter)
-    if start is None:
-        start = getattr(track if parameter in TRACK_FIELDS else train if parameter in TRAIN_FIELDS
-                        else foundation, parameter)
-    start, stop = scalar("start", parameter, start), scalar("stop", parameter, stop)
-    if start == stop:
-        raise ValueError(f"start and stop of {parameter!r} must differ; both are {start!r}")
-    automatic = isinstance(harmonics, str) and harmonics == "auto"
-    if not automatic:
-        require_count("harmonics", harmonics, 1)
-    elif samples is not None or initial is not None:
-        raise ValueError("samples and initial need an explicit harmonics=m; 'auto' chooses m itself")
-    if accuracy is not None and not automatic:
-        warnings.warn("accuracy is used by harmonics='auto' only; ignored for an explicit m")
-    accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy", accuracy)
-    require_count("max_points", max_points, 2)
-    tol = require_fraction("tol", tol)
-    span = abs(stop - start)
-    step = span / 50 if step is None else scalar("step", parameter, step)
-    bounds = (step / 1000 if min_step is None else min_step, span / 10 if max_step is None else max_step)
-    if not 0 < bounds[0] <= step <= bounds[1] or step > span:
-        raise ValueError(f"need 0 < min_step <= step <= max_step and step <= |stop - start| for "
-                         f"{parameter!r}; got {bounds[0]!r}, {step!r}, {bounds[1]!r}")
+    with blas_threads(1):
+        if isinstance(foundation, SleeperCell):
+            raise TypeError(
+                f"continuation follows one law under every sleeper; foundation is a SleeperCell of "
+                f"{foundation.sleepers} sleepers.  Solve the cell at each value instead, "
+                "rt.solve(track, train.replace(speed=v), cell); if its sleepers are all alike, pass "
+                "their one law, cell.foundations[0], to continuation or rt.sweep")
+        if not isinstance(parameter, str):
+            raise ValueError(f"parameter must be the name of a field; got {parameter!r}")
+        check_parameter(track, train, foundation, parameter)
+        if start is None:
+            start = getattr(track if parameter in TRACK_FIELDS else train if parameter in TRAIN_FIELDS
+                            else foundation, parameter)
+        start, stop = scalar("start", parameter, start), scalar("stop", parameter, stop)
+        if start == stop:
+            raise ValueError(f"start and stop of {parameter!r} must differ; both are {start!r}")
+        automatic = isinstance(harmonics, str) and harmonics == "auto"
+        if not automatic:
+            require_count("harmonics", harmonics, 1)
+        elif samples is not None or initial is not None:
+            raise ValueError("samples and initial need an explicit harmonics=m; 'auto' chooses m itself")
+        if accuracy is not None and not automatic:
+            warnings.warn("accuracy is used by harmonics='auto' only; ignored for an explicit m")
+        accuracy = DEFAULT_ACCURACY if accuracy is None else require_fraction("accuracy", accuracy)
+        require_count("max_points", max_points, 2)
+        tol = require_fraction("tol", tol)
+        span = abs(stop - start)
+        step = span / 50 if step is None else scalar("step", parameter, step)
+        bounds = (step / 1000 if min_step is None else min_step, span / 10 if max_step is None else max_step)
+        if not 0 < bounds[0] <= step <= bounds[1] or step > span:
+            raise ValueError(f"need 0 < min_step <= step <= max_step and step <= |stop - start| for "
+                             f"{parameter!r}; got {bounds[0]!r}, {step!r}, {bounds[1]!r}")
 
-    settings = (track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
-                max_corrector)
-    if not automatic:
-        branch, worst = _trace(*settings, harmonics, samples, initial)
-        if worst[0] > WARN_TRUNCATION:
+        settings = (track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
+                    max_corrector)
+        if not automatic:
+            branch, worst = _trace(*settings, harmonics, samples, initial)
+            if worst[0] > WARN_TRUNCATION:
+                warnings.warn(TruncationWarning(
+                    f"harmonics={harmonics}: the estimated truncation error reaches {worst[0]:.1%} "
+                    f"of the peak sleeper displacement at {parameter} = {worst[1]:.6g}; "
+                    f"harmonics='auto' would take m = {worst[2]} there (pass a larger harmonics "
+                    "or use 'auto')"), stacklevel=2)
+            return _warned(branch)
+        m = max(_predicted(track, train, foundation, parameter, p, accuracy) for p in (start, stop))
+        for _round in range(AUTO_ROUNDS + 1):
+            branch, worst = _trace(*settings, m, None, None)
+            if worst[0] <= accuracy or m >= MAX_AUTO_HARMONICS or not branch.converged.all():
+                break
+            m = min(MAX_AUTO_HARMONICS, max(math.ceil(1.1 * m), worst[2]))
+        note = (f"; harmonics='auto' chose m = {branch.harmonics}, largest estimated truncation "
+                f"error {worst[0]:.1e} at {parameter} = {worst[1]:.6g}")
+        if worst[0] > accuracy:
             warnings.warn(TruncationWarning(
-                f"harmonics={harmonics}: the estimated truncation error reaches {worst[0]:.1%} "
-                f"of the peak sleeper displacement at {parameter} = {worst[1]:.6g}; "
-                f"harmonics='auto' would take m = {worst[2]} there (pass a larger harmonics "
-                "or use 'auto')"), stacklevel=2)
-        return _warned(branch)
-    m = max(_predicted(track, train, foundation, parameter, p, accuracy) for p in (start, stop))
-    for _round in range(AUTO_ROUNDS + 1):
-        branch, worst = _trace(*settings, m, None, None)
-        if worst[0] <= accuracy or m >= MAX_AUTO_HARMONICS or not branch.converged.all():
-            break
-        m = min(MAX_AUTO_HARMONICS, max(math.ceil(1.1 * m), worst[2]))
-    note = (f"; harmonics='auto' chose m = {branch.harmonics}, largest estimated truncation "
-            f"error {worst[0]:.1e} at {parameter} = {worst[1]:.6g}")
-    if worst[0] > accuracy:
-        warnings.warn(TruncationWarning(
-            f"harmonics='auto' stopped at m = {branch.harmonics} with an estimated truncation "
-            f"error of {worst[0]:.1%} at {parameter} = {worst[1]:.6g} (pass a larger harmonics)"),
-            stacklevel=2)
-    return _warned(dataclasses.replace(branch, message=branch.message + note))
+                f"harmonics='auto' stopped at m = {branch.harmonics} with an estimated truncation "
+                f"error of {worst[0]:.1%} at {parameter} = {worst[1]:.6g} (pass a larger harmonics)"),
+                stacklevel=2)
+        return _warned(dataclasses.replace(branch, message=branch.message + note))
 
 
 def _predicted(track, train, foundation, parameter, value, accuracy) -> int:

@@ -29,7 +29,7 @@ from ..solvers.solution import ConvergenceWarning
 from ..timedomain.simulation import simulate_time_domain
 from ..model.track import Track
 from ..model.train import Train
-from ..solvers.threads import one_blas_thread
+from ..solvers.threads import blas_threads
 
 __all__ = ["SpeedRamp", "speed_ramp"]
 
@@ -76,7 +76,6 @@ def _interharmonic(result) -> float:
                            history.shape[1]).interharmonic_fraction
 
 
-@one_blas_thread
 def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span: int = 8,
                steps_per_period: int = 2400, *, tol: float = 1e-6, max_periods: int = 100,
                start="static", warn_step_error: float | None = None) -> SpeedRamp:
@@ -107,30 +106,31 @@ def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span
     >>> ramp.converged.tolist(), round(1e3 * float(ramp.minimum[1]), 2)
     ([True, True], -1.13)
     """
-    speeds = np.asarray(speeds, dtype=float).ravel()
-    if speeds.size == 0 or not np.all(np.isfinite(speeds) & (speeds > 0)):
-        raise ValueError(f"speeds must be a non-empty sequence of finite speeds > 0; got {speeds!r}")
-    results = []
-    state, previous = start, None
-    for speed in speeds:
-        if previous is not None:
-            u, v = state
-            state = (u, v * (speed / previous))
-        with warnings.catch_warnings():
-            # SpeedRamp.converged reports each speed; a warning per speed would repeat it
-            warnings.simplefilter("ignore", ConvergenceWarning)
-            result = simulate_time_domain(track, train.replace(speed=float(speed)), foundation,
-                                          elements_per_span, steps_per_period, tol=tol,
-                                          max_periods=max_periods, start=state,
-                                          warn_step_error=warn_step_error)
-        results.append(result)
-        state, previous = result.final_state, speed
-    return SpeedRamp(
-        speeds=speeds,
-        minimum=np.array([float(r.sleeper_displacements.min()) for r in results]),
-        maximum=np.array([float(r.sleeper_displacements.max()) for r in results]),
-        converged=np.array([r.converged for r in results]),
-        periods=np.array([r.periods for r in results]),
-        interharmonic_fraction=np.array([_interharmonic(r) for r in results]),
-        final_state=state,
-    )
+    with blas_threads(1):
+        speeds = np.asarray(speeds, dtype=float).ravel()
+        if speeds.size == 0 or not np.all(np.isfinite(speeds) & (speeds > 0)):
+            raise ValueError(f"speeds must be a non-empty sequence of finite speeds > 0; got {speeds!r}")
+        results = []
+        state, previous = start, None
+        for speed in speeds:
+            if previous is not None:
+                u, v = state
+                state = (u, v * (speed / previous))
+            with warnings.catch_warnings():
+                # SpeedRamp.converged reports each speed; a warning per speed would repeat it
+                warnings.simplefilter("ignore", ConvergenceWarning)
+                result = simulate_time_domain(track, train.replace(speed=float(speed)), foundation,
+                                              elements_per_span, steps_per_period, tol=tol,
+                                              max_periods=max_periods, start=state,
+                                              warn_step_error=warn_step_error)
+            results.append(result)
+            state, previous = result.final_state, speed
+        return SpeedRamp(
+            speeds=speeds,
+            minimum=np.array([float(r.sleeper_displacements.min()) for r in results]),
+            maximum=np.array([float(r.sleeper_displacements.max()) for r in results]),
+            converged=np.array([r.converged for r in results]),
+            periods=np.array([r.periods for r in results]),
+            interharmonic_fraction=np.array([_interharmonic(r) for r in results]),
+            final_state=state,
+        )
