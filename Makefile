@@ -168,9 +168,9 @@ test: $(STAMP) $(MATHJAX)
 # with the masses, stiffnesses and dampings of every Track changed by 1e-12
 # (relative) and BLAS on two threads, compared by nbval with the stored
 # outputs.  A printed digit that changes here is decided by round-off and
-# would differ on another machine.  About 3 minutes on 2 cores; make book and
-# make test already take 14 of the 15 minutes a fresh clone may spend, so it
-# is a target of its own.
+# would differ on another machine.  About 3 minutes on 2 cores; on a fresh
+# clone make test takes 12 minutes (venv included) and make book 7.5 more
+# (measured for issue 28), so it is a target of its own.
 ROUNDOFF_PROBE ?= 1e-12
 test-roundoff: $(STAMP) $(MATHJAX)
 	notebooks=$$(find book -name '*.ipynb' -not -path '*/.ipynb_checkpoints/*' -not -path '*/_build/*' | sort); \
