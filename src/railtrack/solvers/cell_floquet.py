@@ -29,8 +29,7 @@ from ..equations.cell_hill import (cell_bloch_phases, cell_hill_derivative, cell
 from ..equations.harmonic_balance import default_samples
 from ..model.cell import SleeperCell
 from .contour import RANK_TOLERANCE, polish
-from .floquet import (EDGE, MEMORY_BYTES, RESIDUAL_LIMIT, Floquet, _base_phases, _distinct,
-                      floquet_result)
+from .floquet import MEMORY_BYTES, Floquet, _base_phases, _distinct, floquet_result, strip_roots
 
 __all__ = ["cell_floquet", "uniform_cell", "travelling_wave", "cell_tangent"]
 
@@ -270,10 +269,7 @@ def _search(view, bases, m, min_multiplier, max_multiplier, points, shifts) -> l
                                         phase[rows[which]], p) / period
         parts.append(polish(local, z0[rows], p0[rows], local_slope))
     values, vectors, residuals = (np.concatenate(part) for part in zip(*parts))
-    inside = (np.abs(values.imag) <= np.pi + EDGE) & (values.real >= low) \
-        & (values.real <= high) & (residuals < RESIDUAL_LIMIT)
-    values = values.real + 1j * (np.pi - np.mod(np.pi - values.imag, 2 * np.pi))
-    tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
+    values, inside, tails = strip_roots(values, vectors, residuals, low, high, top)
     for i in np.flatnonzero(inside):
         found.append((values[i], phase[i], tails[i], base[i]))
         if mirrored[i] and 1e-12 < phase[i] < np.pi - 1e-12:

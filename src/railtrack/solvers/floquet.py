@@ -241,12 +241,7 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
                 matrix, slope = newton_parts(passage, toeplitz, period, phase[rows])
                 parts.append(polish(matrix, z0[rows], p0[rows], slope))
             values, vectors, residuals = (np.concatenate(part) for part in zip(*parts))
-            # A real negative multiplier sits on the strip's edge, Im z = +-pi, where
-            # round-off decides the side: accept both edges, fold them onto (-pi, pi].
-            inside = (np.abs(values.imag) <= np.pi + EDGE) & (values.real >= low) \
-                & (values.real <= high) & (residuals < RESIDUAL_LIMIT)
-            values = values.real + 1j * (np.pi - np.mod(np.pi - values.imag, 2 * np.pi))
-            tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
+            values, inside, tails = strip_roots(values, vectors, residuals, low, high, top)
             for i in np.flatnonzero(inside):
                 found += _with_mirror(values[i], phase[i], tails[i], base[i], vectors[i], mirrored[i])
         return floquet_result(_distinct(found), bases, sleepers, m, period, min_multiplier, solution,
@@ -263,6 +258,22 @@ def _with_mirror(z, phase, tail, base, vector, mirrored) -> list:
     if mirrored and 1e-12 < phase < np.pi - 1e-12:
         found.append((np.conj(z), 2 * np.pi - phase, tail, base, np.conj(vector[::-1])))
     return found
+
+
+def strip_roots(values: np.ndarray, vectors: np.ndarray, residuals: np.ndarray, low: float,
+                high: float, top) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Polished exponents z folded onto the strip, which of them to keep, their tails.
+
+    Kept: inside the search box (low <= Re z <= high), resolved (residual
+    below `RESIDUAL_LIMIT`) and on the strip |Im z| <= pi.  A real negative
+    multiplier sits on the strip's edge, Im z = +-pi, where round-off decides
+    the side: both edges are accepted and folded onto (-pi, pi].  The tail
+    is each eigenvector's share in the rows `top` (the highest harmonics).
+    """
+    inside = (np.abs(values.imag) <= np.pi + EDGE) & (values.real >= low) \
+        & (values.real <= high) & (residuals < RESIDUAL_LIMIT)
+    folded = values.real + 1j * (np.pi - np.mod(np.pi - values.imag, 2 * np.pi))
+    return folded, inside, np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
 
 
 def _continued(guess: Floquet, passage, toeplitz: np.ndarray, period: float, bases: np.ndarray,
