@@ -36,7 +36,8 @@ FIELDS: dict[str, dict[str, tuple[str, str | None]]] = {
     "Train": dict(wagon_length=("m", "wagon_length"), axle_positions=("m", None),
                   axle_loads=("N", "wheel_load"), speed=("m/s", "speed")),
     "LinearFoundation": dict(stiffness=_K2, damping=_ETA2),
-    "BilinearFoundation": dict(compression_stiffness=_K2, tension_stiffness=_K2,
+    # a tension stiffness of any size below k2+ is a modelling choice (0: tensionless)
+    "BilinearFoundation": dict(compression_stiffness=_K2, tension_stiffness=("N/m", None),
                                damping=_ETA2),
     "CubicFoundation": dict(stiffness=_K2, cubic_stiffness=("N/m^3", "cubic_stiffness"),
                             epsilon=("", None), damping=_ETA2),
