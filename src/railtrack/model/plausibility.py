@@ -90,16 +90,18 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
     PlausibleRange(
         "sleeper_mass", "kg", 30.0, 400.0, "half sleepers (one rail seat) weigh",
         "half a timber sleeper about 40 kg, half a concrete monoblock 120-170 kg "
-        "(Esveld 2001, Modern Railway Track, not read here; 170 kg in " + _MPE + "); up to 343 kg with the ballast share of "
-        "Zhai et al. 2004 [zhai2004ballast]; " + _TABLE1 + ": 100 kg"),
+        "(Esveld 2001, Modern Railway Track, not read here; 170 kg in " + _MPE + "); up "
+        "to 343 kg with the ballast share of Zhai et al. 2004 [zhai2004ballast]; "
+        + _TABLE1 + ": 100 kg"),
     PlausibleRange(
         "sleeper_spacing", "m", 0.5, 0.75, "sleepers lie",
-        "0.6 m on main lines, 0.55-0.75 m elsewhere (Esveld 2001, not read here; 0.55 m in " + _MPE + "); " + _TABLE1 + ": 0.6 m"),
+        "0.6 m on main lines, 0.55-0.75 m elsewhere (Esveld 2001, not read here; 0.55 m in "
+        + _MPE + "); " + _TABLE1 + ": 0.6 m"),
     PlausibleRange(
         "pad_stiffness", "N/m", 5e7, 2e9, "pads are",
         "soft pads 50-100 MN/m to stiff (HDPE) pads of 1-2 GN/m (" + _K93 + "; Thompson "
-        "2009, Railway Noise and Vibration, not read here); 225 MN/m in " + _MPE + "; 65 MN/m in Zhai et al. 2004 [zhai2004ballast]; "
-        + _TABLE1 + ": 220 MN/m"),
+        "2009, Railway Noise and Vibration, not read here); 225 MN/m in " + _MPE + "; "
+        "65 MN/m in Zhai et al. 2004 [zhai2004ballast]; " + _TABLE1 + ": 220 MN/m"),
     PlausibleRange(
         "pad_damping", "N s/m", 1e4, 1e6, "pad dashpots are",
         "tens of kN s/m for real pads (" + _K93 + "; 75 kN s/m in Zhai et al. 2004 "
@@ -107,9 +109,9 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
     PlausibleRange(
         "foundation_stiffness", "N/m", 5e6, 3e8, "ballast and subgrade under one rail seat are",
         "20 MN/m per half sleeper in " + _MPE + "; 49.6 MN/m for "
-        "Zhai et al. 2004 [zhai2004ballast] in series; soft ground near 5-10 MN/m "
-        "(Madshus & Kaynia 2000 [madshus2000]), ballast on rock to a few hundred MN/m "
-        "(" + _K93 + "); " + _TABLE1 + ": 20 MN/m"),
+        "Zhai et al. 2004 [zhai2004ballast] in series; 5 MN/m for the soft ground of the "
+        "book's chapter 6, a few hundred MN/m for ballast on rock (" + _K93 + "); "
+        + _TABLE1 + ": 20 MN/m"),
     PlausibleRange(
         "foundation_damping", "N s/m", 1e4, 5e5, "ballast dashpots under one rail seat are",
         "ballast 58.8 and subgrade 31.2 kN s/m in Zhai et al. 2004 [zhai2004ballast]; "
@@ -136,7 +138,7 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "unsprung_mass", "kg", 200.0, 2000.0, "unsprung masses per wheel are",
         "half a wheelset: 906 kg for the Manchester benchmark [iwnicki1998manchester]; "
         "light-rail wheels a few hundred kg, axle-hung motors to about 2 t; 600 kg in "
-        "issue 20 and Jenkins et al. 1974 [jenkins1974]"),
+        "issue 20 and the book's chapter 13"),
     PlausibleRange(
         "hertz_constant", "N/m^1.5", 6e10, 1.5e11, "Hertz constants C_H are",
         "C_H = 2 E sqrt(R) / (3 (1 - nu^2)) for steel (E = 210 GPa, nu = 0.3) and wheel "
@@ -152,20 +154,22 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "here)"),
     PlausibleRange(
         "dip_depth", "m", 1e-4, 5e-3, "dipped welds and joints are",
-        "0.1-1 mm at welds, a few mm at dipped joints (Jenkins et al. 1974 [jenkins1974]; "
-        "Esveld 2001, not read here); the book's 0.5-2 mm dips"),
+        "0.1-1 mm at welds, a few mm at dipped joints (Jenkins et al. 1974 [jenkins1974] "
+        "and Esveld 2001, neither read here); the book's 0.5-2 mm dips"),
     PlausibleRange(
         "dip_length", "m", 0.2, 3.0, "dips are",
         "a weld's dip is 0.5-1 m long, a joint's up to a few metres (Esveld 2001, not read "
         "here); the book's 0.5 and 1 m dips"),
     PlausibleRange(
         "dip_angle", "rad", 1e-3, 3e-2, "total dip angles 2 alpha are",
-        "a few to 20 mrad at dipped joints and welds (Jenkins et al. 1974 [jenkins1974]); "
+        "a few to 20 mrad at dipped joints and welds (Jenkins et al. 1974 [jenkins1974], not "
+        "read here); "
         "3.1-12.6 mrad for the book's dips (2 pi depth / length)"),
     PlausibleRange(
         "gap", "m", 1e-4, 5e-3, "gaps under hanging sleepers are",
         "0.5-2 mm voids studied by Lundqvist & Dahlberg 2005 [lundqvist2005] and in the book; "
-        "a few mm measured under unsupported sleepers (Sysyn et al. 2021 [sysyn2021])"),
+        "voids of a few mm under unsupported sleepers (Sysyn et al. 2021 [sysyn2021], not "
+        "read here)"),
     PlausibleRange(
         "gravity", "m/s^2", 9.78, 9.84, "gravity is",
         "9.78 m/s^2 at the equator to 9.83 at the poles; 9.81 (STANDARD_GRAVITY); 0 (no "
