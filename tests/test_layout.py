@@ -32,6 +32,7 @@ PUBLIC = {
     "ring_multipliers", "RingMultipliers", "SleeperCell", "GapFoundation", "CellSolution",
     "random_support", "RandomSupport", "Wheel", "CosineDip", "WheelSolution",
     "TimoshenkoRail", "p2_force", "EquivalentTrack", "equivalent_track",
+    "PlausibilityWarning", "plausible_ranges", "plausibility",
 }
 
 

@@ -69,6 +69,8 @@ from .model.timoshenko import TimoshenkoRail
 from .studies.p2_force import EquivalentTrack, equivalent_track, p2_force
 from .model.track import Track
 from .model.train import Train
+from .model.plausibility import PlausibilityWarning, plausible_ranges
+from .model.plausibility_check import plausibility
 
 
 def explore(**initial):
@@ -146,4 +148,7 @@ __all__ = [
     "dissipation",
     "Dissipation",
     "load_work",
+    "PlausibilityWarning",
+    "plausible_ranges",
+    "plausibility",
 ]

@@ -13,7 +13,8 @@ import numpy as np
 
 from .foundations import as_foundation
 from .passage import Passage
-from .validation import require_non_negative, require_positive
+from .plausibility_check import FIELDS, check_plausible, quantities_to_si
+from .validation import require_non_negative, require_positive, to_si
 
 __all__ = ["SleeperCell", "sleeper_array", "cell_size"]
 
@@ -78,6 +79,7 @@ class SleeperCell:
     gravity: float = 0.0
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_non_negative("gravity", self.gravity, "m/s^2")
         object.__setattr__(self, "gravity", float(self.gravity))
         for name, unit in (("sleeper_mass", "kg"), ("pad_stiffness", "N/m"),
@@ -92,6 +94,7 @@ class SleeperCell:
         if len(set(lengths.values())) != 1:
             raise ValueError(f"a SleeperCell needs one value per sleeper in every field; "
                              f"got lengths {lengths}")
+        check_plausible(self)
 
     @property
     def sleepers(self) -> int:
@@ -124,6 +127,7 @@ class SleeperCell:
                              f"sleepers (0 to {self.sleepers - 1})")
         values = {name: getattr(self, name).copy() for name in known}
         for name, value in changes.items():
+            value = to_si(name, value, FIELDS["SleeperCell"][name][0])
             # Checked before it enters the float array, where True would become 1.0.
             (require_non_negative if "damping" in name else require_positive)(name, value)
             values[name][index] = value

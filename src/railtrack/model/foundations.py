@@ -21,6 +21,7 @@ from typing import Callable, Protocol
 
 import numpy as np
 
+from .plausibility_check import check_plausible, quantities_to_si
 from .track import as_float64, require_non_negative, require_positive
 
 __all__ = [
@@ -69,9 +70,11 @@ class LinearFoundation:
     damping: float = 0.0
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_positive("stiffness", self.stiffness, "N/m")
         require_non_negative("damping", self.damping, "N s/m")
         as_float64(self)
+        check_plausible(self)
 
     @classmethod
     def paper(cls) -> "LinearFoundation":
@@ -127,10 +130,12 @@ class BilinearFoundation:
     damping: float = 0.0
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_positive("compression_stiffness", self.compression_stiffness, "N/m")
         require_non_negative("tension_stiffness", self.tension_stiffness, "N/m")
         require_non_negative("damping", self.damping, "N s/m")
         as_float64(self)
+        check_plausible(self)
 
     @classmethod
     def paper(cls, ratio: float = 0.5) -> "BilinearFoundation":
@@ -180,11 +185,13 @@ class CubicFoundation:
     damping: float = 0.0
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_positive("stiffness", self.stiffness, "N/m")
         require_non_negative("cubic_stiffness", self.cubic_stiffness, "N/m^3")
         require_non_negative("epsilon", self.epsilon)
         require_non_negative("damping", self.damping, "N s/m")
         as_float64(self)
+        check_plausible(self)
 
     @classmethod
     def paper(cls, epsilon: float = 0.8) -> "CubicFoundation":

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .plausibility_check import check_plausible, quantities_to_si
 from .track import as_float64, require_non_negative, require_positive
 
 __all__ = ["GapFoundation", "DEFAULT_RAMP"]
@@ -64,11 +65,13 @@ class GapFoundation:
     ramp: float = DEFAULT_RAMP
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_non_negative("gap", self.gap, "m")
         require_positive("stiffness", self.stiffness, "N/m")
         require_non_negative("damping", self.damping, "N s/m")
         require_positive("ramp", self.ramp, "m")
         as_float64(self)
+        check_plausible(self)
 
     def _parts(self, w, v):
         penetration = -(np.asarray(w, dtype=float) + self.gap)

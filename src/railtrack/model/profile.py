@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .plausibility_check import check_plausible, quantities_to_si
 from .validation import as_float64, require_finite, require_non_negative, require_positive
 
 __all__ = ["CosineDip", "smooth_rail"]
@@ -55,6 +56,7 @@ class CosineDip:
     centre: float = 0.0
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_non_negative("depth", self.depth, "m")
         require_positive("length", self.length, "m")
         require_positive("period", self.period, "m")
@@ -63,6 +65,7 @@ class CosineDip:
             raise ValueError(f"a dip's length ({self.length} m) must be shorter than its "
                              f"period ({self.period} m)")
         as_float64(self)
+        check_plausible(self)
 
     def __call__(self, x) -> np.ndarray:
         s = np.asarray(x, dtype=float) - self.centre

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .plausibility_check import check_plausible, quantities_to_si
 from .track import as_float64, require_non_negative, require_positive
 
 __all__ = ["TimoshenkoRail"]
@@ -54,9 +55,11 @@ class TimoshenkoRail:
     rotary_inertia: float
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_positive("shear_stiffness", self.shear_stiffness, "N")
         require_non_negative("rotary_inertia", self.rotary_inertia, "kg m")
         as_float64(self)
+        check_plausible(self)
 
     @classmethod
     def from_section(cls, shear_coefficient: float, shear_modulus: float, area: float,

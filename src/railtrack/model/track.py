@@ -8,6 +8,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
+from .plausibility_check import check_plausible, quantities_to_si
 from .validation import as_float64, require_finite, require_non_negative, require_positive
 
 __all__ = ["Track", "require_positive", "require_non_negative", "require_finite", "as_float64"]
@@ -63,6 +64,7 @@ class Track:
     pad_damping: float
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_positive("rail_linear_mass", self.rail_linear_mass, "kg/m")
         require_positive("rail_bending_stiffness", self.rail_bending_stiffness, "N m^2")
         require_positive("sleeper_mass", self.sleeper_mass, "kg")
@@ -70,6 +72,7 @@ class Track:
         require_positive("pad_stiffness", self.pad_stiffness, "N/m")
         require_non_negative("pad_damping", self.pad_damping, "N s/m")
         as_float64(self)
+        check_plausible(self)
 
     @classmethod
     def paper(cls, **changes: float) -> "Track":

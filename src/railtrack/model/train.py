@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .plausibility_check import check_plausible, quantities_to_si
 from .validation import as_float64, require_non_negative, require_positive
 
 __all__ = ["Train", "STANDARD_GRAVITY", "SINGLE_AXLE_LENGTH", "MAX_SPEED"]
@@ -72,6 +73,7 @@ class Train:
     speed: float
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_non_negative("axle_positions", self.axle_positions, "m")
         require_positive("axle_loads", self.axle_loads, "N")
         object.__setattr__(self, "axle_positions", _as_tuple("axle_positions", self.axle_positions))
@@ -98,6 +100,7 @@ class Train:
                 "every axle must lie within the wagon, d_j < wagon_length; got last axle "
                 f"at {positions[-1]:g} m and wagon_length={self.wagon_length!r}")
         as_float64(self)
+        check_plausible(self)
 
     @classmethod
     def paper(cls, wheel_spacing: float = 3.0, wheel_load: float = 75e3, **changes) -> "Train":

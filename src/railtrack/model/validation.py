@@ -12,7 +12,40 @@ import dataclasses
 import numpy as np
 from numpy.typing import ArrayLike
 
-__all__ = ["require_positive", "require_non_negative", "require_finite", "as_float64"]
+__all__ = ["require_positive", "require_non_negative", "require_finite", "as_float64", "to_si"]
+
+
+def _is_quantity(value) -> bool:
+    """True for a pint Quantity, known by its attributes: pint is never imported here."""
+    return all(hasattr(value, name) for name in ("magnitude", "units", "to", "dimensionality"))
+
+
+def to_si(name: str, value, unit: str):
+    """`value` in the SI `unit`, its magnitude, if it is a pint Quantity; else `value` as given.
+
+    A sequence holding quantities is converted element by element.  Every
+    dimensional field of the model passes through here, so that
+    ``220 * ureg("MN/m")`` becomes 2.2e8 N/m at the boundary and the library
+    works in SI inside.  pint stays optional: a Quantity is recognised by its
+    attributes and converted by its own registry.
+
+    Raises
+    ------
+    TypeError
+        Naming `name`, the quantity and the unit expected, when the dimension
+        is wrong (a force given for a stiffness).
+    """
+    if isinstance(value, (list, tuple)) and any(_is_quantity(v) for v in value):
+        return type(value)(to_si(name, v, unit) for v in value)
+    if not _is_quantity(value):
+        return value
+    try:
+        magnitude = value.to(unit.replace("^", "**") or "dimensionless").magnitude
+    except Exception as error:  # pint's DimensionalityError, or a unit it cannot parse
+        raise TypeError(f"{name} must be a quantity in {unit or 'no unit'}; got {value} "
+                        f"[{value.dimensionality}], which cannot be converted to {unit}"
+                        ) from error
+    return magnitude
 
 
 def _holds_boolean(value) -> bool:

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .plausibility_check import check_plausible, quantities_to_si
 from .track import as_float64, require_non_negative, require_positive
 
 __all__ = ["Wheel", "HERTZ_UIC60"]
@@ -57,11 +58,13 @@ class Wheel:
     primary_damping: float = 0.0
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_positive("unsprung_mass", self.unsprung_mass, "kg")
         require_positive("hertz_constant", self.hertz_constant, "N/m^1.5")
         require_non_negative("primary_stiffness", self.primary_stiffness, "N/m")
         require_non_negative("primary_damping", self.primary_damping, "N s/m")
         as_float64(self)
+        check_plausible(self)
 
     def contact_force(self, compression) -> np.ndarray:
         """P = C_H max(delta, 0)^{3/2} [N] for the compression delta [m]."""

@@ -13,7 +13,9 @@ for what must not differ between them:
   reason, never ignored;
 * the truncation warning's threshold (`truncation_limit`);
 * the quick stability look after a converged solve (`look_at_stability`);
-* how many failed levels harmonics="auto" steps past (`FAILED_LEVELS`).
+* how many failed levels harmonics="auto" steps past (`FAILED_LEVELS`);
+* a converged result no track survives (`warn_if_displaced`): a displacement
+  above `LARGEST_DISPLACEMENT`, which says the inputs are probably off.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ import warnings
 
 import numpy as np
 
+from ..model.plausibility_check import warn_implausible
 from .arguments import require_fraction
 from .auto_harmonics import DEFAULT_ACCURACY, WARN_TRUNCATION
 from .foundation_at_rest import check_foundation_at_rest
@@ -30,7 +33,7 @@ from .stability_hint import STABILITY_MODES, judge_stability
 
 __all__ = ["LARGEST_TOL", "FAILED_LEVELS", "checked_tol", "checked_accuracy",
            "check_laws_at_rest", "refuse_unused", "require_scalar_fields", "truncation_limit",
-           "checked_stability", "look_at_stability"]
+           "checked_stability", "look_at_stability", "LARGEST_DISPLACEMENT", "warn_if_displaced"]
 
 LARGEST_TOL = 1e-2
 """The loosest tol any path accepts [-].
@@ -146,4 +149,36 @@ def look_at_stability(result, stability: str, stacklevel: int = 4):
     """
     if not result.converged:
         return None
+    warn_if_displaced(result)
     return judge_stability(result, stability, stacklevel=stacklevel)
+
+
+LARGEST_DISPLACEMENT = 0.1
+"""|w| [m] of a sleeper or of the rail above one past which a converged result warns.
+
+No track survives it.  Measured deflections stay below about 10 mm even on the
+soft ground of Ledsgard near the critical speed (Madshus & Kaynia 2000), a
+hanging sleeper's gap is a few mm, and a wheel's flange is about 30 mm high:
+a rail 0.1 m down has derailed the train.  0.1 m is ten times the worst
+deflection measured, so a result beyond it is the inputs' doing (a foundation
+stiffness typed in MN/m: 20 N/m "converges" to -162 m)."""
+
+
+def warn_if_displaced(result, samples: int = 64) -> None:
+    """Warn `PlausibilityWarning` if a converged result moves a sleeper or the rail > 0.1 m.
+
+    Sleepers and the rail above sleeper 0 are sampled at `samples` times over
+    one period (the peaks of a smooth periodic response, to well under the
+    factor this threshold leaves).
+    """
+    if not result.converged:
+        return
+    t = np.linspace(0.0, float(result.period), samples, endpoint=False)
+    sleepers = float(np.max(np.abs(result.sleeper_displacement(t))))
+    rail = float(np.max(np.abs(result.rail_displacement(t))))
+    if max(sleepers, rail) > LARGEST_DISPLACEMENT:
+        warn_implausible(
+            f"the solution moves the sleepers by up to {sleepers:.3g} m and the rail by up "
+            f"to {rail:.3g} m: no track survives a displacement above "
+            f"{LARGEST_DISPLACEMENT:g} m, so the inputs are probably off (a unit slip? "
+            f"check them against railtrack.plausible_ranges())")

@@ -31,6 +31,7 @@ from .guards import (
     checked_tol,
     refuse_unused,
     truncation_limit,
+    warn_if_displaced,
 )
 from .wheel_newton import solve_wheels
 from .wheel_rounds import auto_wheels, wrap
@@ -164,5 +165,6 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
         text = (f"harmonics={result.harmonics}: the estimated truncation error of the contact "
                 f"force is {result.truncation_error:.1%} of Q; pass a larger harmonics")
     budget_spent = max_iterations is not None and result.iterations >= iterations
+    warn_if_displaced(result)
     return report(result, strict, truncation_limit(automatic, accuracy), text,
                   quiet=budget_spent)

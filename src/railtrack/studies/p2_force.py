@@ -38,8 +38,10 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.optimize import brentq
 
+from ..model.plausibility_check import check_plausible, check_value, quantities_to_si
 from ..model.profile import CosineDip
 from ..model.track import as_float64, require_non_negative, require_positive
+from ..model.validation import to_si
 from .point_receptance import one_law, point_receptance
 
 __all__ = ["EquivalentTrack", "p2_force", "dip_angle", "point_receptance", "fit_equivalent_track",
@@ -66,10 +68,12 @@ class EquivalentTrack:
     damping: float
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_positive("mass", self.mass, "kg")
         require_positive("stiffness", self.stiffness, "N/m")
         require_non_negative("damping", self.damping, "N s/m")
         as_float64(self)
+        check_plausible(self)
 
     @classmethod
     def british(cls) -> "EquivalentTrack":
@@ -81,6 +85,13 @@ class EquivalentTrack:
         the first pages could be read.
         """
         return cls(245.0, 150e6, 55.4e3)
+
+
+_P2_ARGUMENTS = ("static_load", "dip_angle", "speed", "unsprung_mass", "track_mass",
+                 "track_stiffness", "track_damping")
+_P2_UNITS = ("N", "rad", "m/s", "kg", "kg", "N/m", "N s/m")
+_P2_ROWS = ("wheel_load", "dip_angle", "speed", "unsprung_mass", "track_mass", "track_stiffness",
+            "track_damping")
 
 
 def p2_force(static_load: ArrayLike, dip_angle: ArrayLike, speed: ArrayLike,
@@ -120,6 +131,10 @@ def p2_force(static_load: ArrayLike, dip_angle: ArrayLike, speed: ArrayLike,
     >>> round(p2_force(75e3, 2e-3, 45.0, 600.0, t.mass, t.stiffness, t.damping))
     94971
     """
+    static_load, dip_angle, speed, unsprung_mass, track_mass, track_stiffness, track_damping = (
+        to_si(name, value, unit) for name, value, unit in zip(_P2_ARGUMENTS, (
+            static_load, dip_angle, speed, unsprung_mass, track_mass, track_stiffness,
+            track_damping), _P2_UNITS))
     require_non_negative("static_load", static_load, "N")
     require_non_negative("dip_angle", dip_angle, "rad")
     require_non_negative("speed", speed, "m/s")
@@ -127,6 +142,10 @@ def p2_force(static_load: ArrayLike, dip_angle: ArrayLike, speed: ArrayLike,
     require_positive("track_mass", track_mass, "kg")
     require_positive("track_stiffness", track_stiffness, "N/m")
     require_non_negative("track_damping", track_damping, "N s/m")
+    for name, value, row in zip(_P2_ARGUMENTS, (static_load, dip_angle, speed, unsprung_mass,
+                                               track_mass, track_stiffness, track_damping),
+                                _P2_ROWS):
+        check_value(name, value, row)
     m_u, m_t = np.asarray(unsprung_mass, float), np.asarray(track_mass, float)
     k_t, c_t = np.asarray(track_stiffness, float), np.asarray(track_damping, float)
     bracket = 1.0 - c_t * np.pi / (4.0 * np.sqrt(k_t * (m_u + m_t)))
