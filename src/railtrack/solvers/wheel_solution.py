@@ -25,6 +25,7 @@ from ..model.passage import Passage
 from .arguments import require_count
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
+from .result_protocol import one_period, period_times, rail_under_wheels, wheel_positions
 
 __all__ = ["WheelSolution"]
 
@@ -121,9 +122,7 @@ class WheelSolution:
         Take it modulo the wagon length H to read it within one wagon, where
         the profile and the cell repeat.
         """
-        t = np.asarray(t, dtype=float)
-        d = np.asarray(self.passage.axle_positions, dtype=float)
-        return float(self.passage.speed) * t[None] - d.reshape((-1,) + (1,) * t.ndim)
+        return wheel_positions(self.passage, t)
 
     def compression(self, t: ArrayLike) -> np.ndarray:
         """delta_k(t) [m], shape (K,) + t.shape; the wheel is off the rail where < 0."""
@@ -175,7 +174,7 @@ class WheelSolution:
         sampled period.
         """
         cell = self.sleepers.cell.sleepers * float(self.passage.sleeper_spacing)
-        t = self.one_period(4 * self.sleepers.samples)     # the force's kinks want samples
+        t = period_times(self.period, 4 * self.sleepers.samples)   # the force's kinks want samples
         force = self.contact_force(t)
         u = np.mod(self.wheel_position(t) / cell, 1.0)
         shape = u**4 - 2 * u**3 + u**2 - 1.0 / 30.0
@@ -229,17 +228,23 @@ class WheelSolution:
         return (self.sleepers._field(t, x, 0) + self._free_rail(t, x, 0)
                 - self._anchor_sag)
 
-    def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
+    def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
+                            kinks: str = "closed form") -> np.ndarray:
         """EI d^2 w_r/dx^2 at time t [s] and position x [m] [N m], sagging positive.
 
         `railtrack.CellSolution.rail_bending_moment` (the static loads' kinks in
-        closed form) plus EI times the curvature of eq. (13.2), which is
-        continuous across the wheel.
+        closed form, or ``kinks="series"``: the plain truncated series) plus EI
+        times the curvature of eq. (13.2), which is continuous across the wheel.
         """
         self._check_positions(x)
         ei = float(self.passage.rail_bending_stiffness)
-        return (ei * self.sleepers._field(t, x, 1) + kink_sum(self.passage, t, x)
-                + ei * self._free_rail(t, x, 2))
+        if kinks == "closed form":
+            static = ei * self.sleepers._field(t, x, 1) + kink_sum(self.passage, t, x)
+        elif kinks == "series":
+            static = ei * self.sleepers._field(t, x, 2)
+        else:
+            raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
+        return static + ei * self._free_rail(t, x, 2)
 
     def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
         """Each sleeper's rail-seat load [N], (N,) + t.shape, positive in compression."""
@@ -249,10 +254,6 @@ class WheelSolution:
         """Each sleeper's w_j(t) [m], (N,) + t.shape, positive upward."""
         return self.sleepers.sleeper_displacement(t)
 
-    def one_period(self, samples: int = 2048) -> np.ndarray:
-        """Times over [0, T) [s], ``samples`` of them."""
-        return np.linspace(0.0, self.period, int(samples), endpoint=False)
-
     def extremes(self, samples: int = 4096) -> dict[str, np.ndarray]:
         """Per wheel: largest and smallest P [N], where they occur [m], mean P [N].
 
@@ -260,7 +261,7 @@ class WheelSolution:
         within one wagon length (0 <= x < H); ``dynamic_factor`` is max P / Q.
         `samples` >= 1 times over the period.
         """
-        t = self.one_period(require_count("samples", samples, 1))
+        t = period_times(self.period, require_count("samples", samples, 1))
         force = self.contact_force(t)
         where = np.mod(self.wheel_position(t), float(self.passage.wagon_length))
         rows = np.arange(force.shape[0])
@@ -272,7 +273,7 @@ class WheelSolution:
 
     def loss_of_contact(self, samples: int = 8192) -> tuple[np.ndarray, np.ndarray]:
         """Per wheel: the share of the period off the rail, and the longest spell off it [s]."""
-        off = self.compression(self.one_period(samples)) <= 0.0
+        off = self.compression(period_times(self.period, samples)) <= 0.0
         dt = self.period / samples
         longest = np.zeros(off.shape[0])
         for k, row in enumerate(off):
@@ -283,3 +284,50 @@ class WheelSolution:
             runs = np.diff(np.flatnonzero(np.diff(np.r_[0, rolled.astype(int), 0])))[::2]
             longest[k] = runs.max() * dt if runs.size else 0.0
         return off.mean(axis=1), longest
+
+    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(t, w): times over [0, T) [s] and every sleeper's w there, (N, samples) [m].
+
+        max(400, 4 m) samples by default (`railtrack.solvers.result_protocol`);
+        ``one_period(n)[0]`` are the times alone, e.g. for `contact_force`.
+        """
+        return one_period(self, samples)
+
+    @property
+    def frequencies(self) -> np.ndarray:
+        """omega_n, n = -m..m [rad/s], of the sleepers' series."""
+        return self.sleepers.frequencies
+
+    @property
+    def stability(self) -> None:
+        """None: a wheel solution is not judged by Floquet (yet)."""
+        return None
+
+    @property
+    def sleeper_shape(self) -> tuple[int, ...]:
+        """(N,): per-sleeper outputs are (N,) + t.shape (`result_protocol`)."""
+        return self.sleepers.sleeper_shape
+
+    def sleeper_velocity(self, t: ArrayLike) -> np.ndarray:
+        """Each sleeper's w_j'(t) [m/s], (N,) + t.shape."""
+        return self.sleepers.sleeper_velocity(t)
+
+    def foundation_force(self, t: ArrayLike) -> np.ndarray:
+        """Each sleeper's force on its foundation [N], (N,) + t.shape, positive in compression."""
+        return self.sleepers.foundation_force(t)
+
+    def rail_above_sleepers(self, t: ArrayLike) -> np.ndarray:
+        """The rail above each sleeper (through its pad) [m], (N,) + t.shape."""
+        return self.sleepers.rail_above_sleepers(t)
+
+    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
+        """The rail at each wheel's contact point [m], (K,) + t.shape."""
+        return rail_under_wheels(self, t)
+
+    def contact_fraction(self, samples: int = 2048) -> np.ndarray:
+        """Share of the period in which each sleeper presses on its foundation [-]."""
+        return self.sleepers.contact_fraction(samples)
+
+    def at_rest(self):
+        """The track under its own weight before the train arrives (`CellSolution.at_rest`)."""
+        return self.sleepers.at_rest()
