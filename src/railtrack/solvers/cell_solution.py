@@ -21,6 +21,7 @@ from ..equations.positions import check_positions, checked_times
 from ..model.passage import Passage
 from .cell_static import cell_at_rest
 from .field_chunks import CHUNK_ENTRIES, fourier_field
+from .result_repr import result_html, result_repr
 from .result_protocol import (contact_fraction, moving_contact_force, one_period,
                               rail_under_wheels, wheel_positions)
 
@@ -226,3 +227,9 @@ class CellSolution:
     def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
         """The rail at each wheel's contact point [m], (K,) + t.shape."""
         return rail_under_wheels(self, t)
+
+    def __repr__(self) -> str:
+        return result_repr(self)
+
+    def _repr_html_(self) -> str:
+        return result_html(self)

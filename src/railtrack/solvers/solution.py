@@ -16,6 +16,7 @@ from ..equations.load import load_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
 from ..equations.positions import checked_times
 from .output_errors import output_truncation_errors
+from .result_repr import result_html, result_repr
 from .result_protocol import (contact_fraction, moving_contact_force, one_period,
                               rail_under_wheels, single_at_rest, wheel_positions)
 
@@ -338,3 +339,9 @@ class Solution:
     def at_rest(self):
         """The sleeper before the train arrives (this model has no self-weight): 0 N, 0 m."""
         return single_at_rest(self.passage, self.foundation)
+
+    def __repr__(self) -> str:
+        return result_repr(self)
+
+    def _repr_html_(self) -> str:
+        return result_html(self)

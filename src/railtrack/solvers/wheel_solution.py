@@ -25,6 +25,7 @@ from ..model.passage import Passage
 from .arguments import require_count
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
+from .result_repr import result_html, result_repr
 from .result_protocol import one_period, period_times, rail_under_wheels, wheel_positions
 
 __all__ = ["WheelSolution"]
@@ -331,3 +332,9 @@ class WheelSolution:
     def at_rest(self):
         """The track under its own weight before the train arrives (`CellSolution.at_rest`)."""
         return self.sleepers.at_rest()
+
+    def __repr__(self) -> str:
+        return result_repr(self)
+
+    def _repr_html_(self) -> str:
+        return result_html(self)
