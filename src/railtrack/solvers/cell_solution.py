@@ -4,7 +4,8 @@ Every output is per sleeper of the cell (first axis j = 0..N-1, sleeper j at
 x = jL), or along the rail at any x; sleeper j + pN repeats sleeper j
 delayed by pNL/v.  Signs as `railtrack.Solution`: displacements positive
 upward, rail-seat load and foundation force positive in compression,
-bending moment positive when sagging.
+bending moment positive when sagging.  The questions and axes are those of
+every steady-state result (`railtrack.solvers.result_protocol`).
 """
 
 from __future__ import annotations

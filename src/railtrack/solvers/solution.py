@@ -1,4 +1,13 @@
-"""The result of a solve: Fourier coefficients and the time histories they define."""
+"""The result of a solve: Fourier coefficients and the time histories they define.
+
+`Solution` is a cell of one sleeper: every sleeper of a uniform track moves
+as the observed one, delayed by L / v, so its per-sleeper outputs keep no
+sleeper axis (``sleeper_shape == ()``); otherwise it answers the questions of
+`railtrack.CellSolution` and `railtrack.WheelSolution` under the same names,
+arguments and axis order (wheels first, time last), and the same
+`one_period` (`railtrack.solvers.result_protocol`).  Its repr is a dozen
+lines (`railtrack.solvers.result_repr`).
+"""
 
 from __future__ import annotations
 

@@ -6,7 +6,9 @@ delta_k(t) [m], the wheel's displacement z_k(t) [m], positive upward; and,
 through `sleepers` (a `railtrack.CellSolution` loaded by the wheels' actual
 forces), every sleeper's displacement, rail-seat load and foundation force.
 t = 0 has axle 1 above sleeper 0, as in `railtrack.Solution`; wheel k is at
-x = vt - d_k along the track.
+x = vt - d_k along the track.  It answers the questions every steady-state
+result answers, alike (`railtrack.solvers.result_protocol`): `one_period`
+gives (t, w), ``one_period(n)[0]`` the times alone.
 """
 
 from __future__ import annotations
