@@ -14,7 +14,9 @@ judged), and for a cell of N sleepers `cell_newton`,
 `cell_static` (the track under its own weight), `cell_solution` and
 `cell_floquet` (its Floquet multipliers, Hill's matrix of the cell);
 `result_protocol` (the questions every steady-state result answers, alike)
-and `result_repr` (their short reprs and HTML tables).
+and `result_repr` (their short reprs and HTML tables); `convergence` (the
+errors and warnings of a solve that fell short); `wheel_extremes` (a wheel
+solution's contact force over a period).
 
 Imports: `railtrack.model` and `railtrack.equations`.
 """

@@ -24,6 +24,7 @@ from ..equations.bowl import DeflectionBowl, deflection_bowl
 from ..equations.load import load_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
 from ..equations.positions import checked_times
+from .convergence import ConvergenceError, ConvergenceWarning, TruncationWarning
 from .output_errors import output_truncation_errors
 from .result_repr import result_html, result_repr
 from .result_protocol import (contact_fraction, moving_contact_force, one_period,
@@ -38,42 +39,6 @@ def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) ->
     t = checked_times(omega, t)
     phases = np.exp(1j * np.multiply.outer(t, omega))
     return (phases @ coefficients).real
-
-
-class ConvergenceError(RuntimeError):
-    """Raised by ``solve(..., strict=True)`` when the iteration did not converge.
-
-    Attributes
-    ----------
-    solution : Solution
-        The unconverged result.
-    slow_harmonics : list of int
-        Harmonics whose residual shrank by less than 10 % per step, or grew.
-    """
-
-    def __init__(self, message: str, solution: "Solution", slow_harmonics: list[int]):
-        super().__init__(message)
-        self.solution = solution
-        self.slow_harmonics = slow_harmonics
-
-
-class ConvergenceWarning(UserWarning):
-    """A solve returned ``converged=False``: its answer is not a solution of eq. (17).
-
-    Issued by `railtrack.solve` (and the studies built on it) unless
-    ``strict=True``, which raises `ConvergenceError` instead.  The message
-    says why the iteration stopped and what to try; where Newton stalls as
-    it does near a fold of the response curve, it names `railtrack.continuation`.
-    Silence it with ``warnings.simplefilter("ignore", rt.ConvergenceWarning)``.
-    """
-
-
-class TruncationWarning(UserWarning):
-    """An explicit number of harmonics m leaves an estimated truncation error above 1 %.
-
-    The message names m, the estimate and the fix (``harmonics="auto"`` or a
-    larger m).  See `railtrack.solvers.truncation`.
-    """
 
 
 @dataclass(frozen=True, eq=False)

@@ -24,11 +24,11 @@ from ..equations.moment import kink_sum
 from ..equations.positions import check_positions, checked_times
 from ..equations.wheel_train_receptance import wheel_train_receptance
 from ..model.passage import Passage
-from .arguments import require_count
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
 from .result_repr import result_html, result_repr
-from .result_protocol import one_period, period_times, rail_under_wheels, wheel_positions
+from .wheel_extremes import anchor_sag, extremes, loss_of_contact
+from .result_protocol import one_period, rail_under_wheels, wheel_positions
 
 __all__ = ["WheelSolution"]
 
@@ -165,25 +165,8 @@ class WheelSolution:
 
     @cached_property
     def _anchor_sag(self) -> float:
-        """The static sag at sleeper 0 of the wheels' uneven mean load [m].
-
-        The rail field of `sleepers` anchors its mean at sleeper 0 under a
-        uniform mean load; where the wheels' force varies along the track
-        their mean load is not uniform, q(x) = sum_k P_k(x) / H, and the free
-        rail of the cell's period sags under its varying part by
-        ``sum_k mean_t[(P_k - mean P_k) Lambda^3 B4(x_k / Lambda)] / (24 EI)`` at
-        sleeper 0 (Bernoulli's B4, `railtrack.equations.cell_rail_field`).
-        Computed once per solution: it takes the contact force over a finely
-        sampled period.
-        """
-        cell = self.sleepers.cell.sleepers * float(self.passage.sleeper_spacing)
-        t = period_times(self.period, 4 * self.sleepers.samples)   # the force's kinks want samples
-        force = self.contact_force(t)
-        u = np.mod(self.wheel_position(t) / cell, 1.0)
-        shape = u**4 - 2 * u**3 + u**2 - 1.0 / 30.0
-        varying = force - force.mean(axis=1, keepdims=True)
-        return float(np.sum(np.mean(varying * shape, axis=1)) * cell**3
-                     / (24 * float(self.passage.rail_bending_stiffness)))
+        """The static sag at sleeper 0 of the wheels' uneven mean load [m] (`anchor_sag`)."""
+        return anchor_sag(self)
 
     def _free_rail(self, t: ArrayLike, x: ArrayLike, derivative: int) -> np.ndarray:
         """The free rail under the wheels' varying forces, eq. (13.2) at (t, x) [m or 1/m].
@@ -262,31 +245,13 @@ class WheelSolution:
 
         Positions are the wheel's distance from sleeper 0 along the track,
         within one wagon length (0 <= x < H); ``dynamic_factor`` is max P / Q.
-        `samples` >= 1 times over the period.
+        `samples` >= 1 times over the period (`wheel_extremes.extremes`).
         """
-        t = period_times(self.period, require_count("samples", samples, 1))
-        force = self.contact_force(t)
-        where = np.mod(self.wheel_position(t), float(self.passage.wagon_length))
-        rows = np.arange(force.shape[0])
-        top, bottom = force.argmax(axis=1), force.argmin(axis=1)
-        return {"max": force[rows, top], "where_max": where[rows, top],
-                "min": force[rows, bottom], "where_min": where[rows, bottom],
-                "mean": force.mean(axis=1),
-                "dynamic_factor": force[rows, top] / np.asarray(self.passage.axle_loads)}
+        return extremes(self, samples)
 
     def loss_of_contact(self, samples: int = 8192) -> tuple[np.ndarray, np.ndarray]:
         """Per wheel: the share of the period off the rail, and the longest spell off it [s]."""
-        off = self.compression(period_times(self.period, samples)) <= 0.0
-        dt = self.period / samples
-        longest = np.zeros(off.shape[0])
-        for k, row in enumerate(off):
-            if row.all():
-                longest[k] = self.period
-                continue
-            rolled = np.roll(row, -int(np.argmin(row)))        # start on the rail
-            runs = np.diff(np.flatnonzero(np.diff(np.r_[0, rolled.astype(int), 0])))[::2]
-            longest[k] = runs.max() * dt if runs.size else 0.0
-        return off.mean(axis=1), longest
+        return loss_of_contact(self, samples)
 
     def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
         """(t, w): times over [0, T) [s] and every sleeper's w there, (N, samples) [m].
