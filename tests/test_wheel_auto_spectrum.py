@@ -45,7 +45,7 @@ def finer(train, profile, m):
 
 
 def gap(result, fine):
-    t = fine.one_period(4096)
+    t = fine.one_period(4096)[0]
     load = float(np.max(fine.passage.axle_loads))
     return float(np.abs(result.contact_force(t) - fine.contact_force(t)).max()) / load
 

@@ -28,7 +28,7 @@ def test_the_force_over_a_period_by_inverse_fft_is_the_direct_sum():
     dip = rt.CosineDip(0.3e-3, 0.6, 1.8, centre=0.9)
     solution = rt.solve(rt.Track.paper(), rt.Train.paper(), cell, wheel=rt.Wheel(600.0),
                         profile=dip, harmonics=60)
-    t = solution.one_period(1024)
+    t = solution.one_period(1024)[0]
     order = np.random.default_rng(1).permutation(t.size)      # not evenly spaced: the sum
     scale = float(np.max(passage.axle_loads))
     for name, unit in (("contact_force", scale), ("compression", 1e-4),

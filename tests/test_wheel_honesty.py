@@ -54,7 +54,7 @@ def test_the_wheel_path_refuses_a_law_unstable_at_rest_as_plain_solve_does():
 def test_an_explicit_m_on_the_dip_is_estimated_and_warned_as_a_finer_solve_measures():
     # m = 30/60 put the smallest contact force 4.5/2.5 % of Q off (issue 27)
     fine = reference(45.0, DIP, 240)
-    t = fine.one_period(4096)
+    t = fine.one_period(4096)[0]
     for m in (30, 60):
         with pytest.warns(TruncationWarning, match=f"harmonics={m}"):
             coarse = rt.solve(TRACK, train(), LAW, m, wheel=WHEEL, profile=DIP)
@@ -68,7 +68,7 @@ def test_a_resolved_smooth_rail_is_estimated_small_and_does_not_warn():
     with warnings.catch_warnings():
         warnings.simplefilter("error", TruncationWarning)
         coarse = rt.solve(TRACK, train(), LAW, 60, wheel=WHEEL)
-    t = fine.one_period(4096)
+    t = fine.one_period(4096)[0]
     true = np.abs(coarse.contact_force(t) - fine.contact_force(t)).max() / Q
     assert 1e-4 < true < 1e-2
     assert 0.5 * true < coarse.truncation_error < 2.0 * true
@@ -99,7 +99,7 @@ def test_the_wheel_path_refuses_a_bad_accuracy(accuracy):
 def test_the_loosest_tol_keeps_the_mean_contact_force_within_it():
     result = rt.solve(TRACK, train(), LAW, 60, wheel=WHEEL, profile=DIP, tol=1e-2)
     assert result.converged and result.iterations >= 1
-    mean = result.contact_force(result.one_period(4096)).mean(axis=1)
+    mean = result.contact_force(result.one_period(4096)[0]).mean(axis=1)
     np.testing.assert_allclose(mean, Q, rtol=1e-2)
     assert np.all(result.loss_of_contact()[0] == 0.0)      # the 0.5 mm dip keeps contact
 
@@ -129,7 +129,7 @@ def test_wheel_auto_meets_the_accuracy_it_was_asked_against_a_finer_solve():
     # stopping at 90 (an "auto" that accepted 100 x the accuracy) is 1.5 % off
     result = rt.solve(TRACK, train(), LAW, wheel=WHEEL, profile=DIP, accuracy=1e-2)
     fine = reference(45.0, DIP, 240)
-    t = fine.one_period(4096)
+    t = fine.one_period(4096)[0]
     assert np.abs(result.contact_force(t) - fine.contact_force(t)).max() < 1e-2 * Q
 
 
@@ -160,7 +160,7 @@ def test_slow_wheels_on_the_dip_converge_and_press_as_v_squared():
             warnings.simplefilter("error", ConvergenceWarning)
             result = rt.solve(TRACK, train(speed), LAW, 60, wheel=WHEEL, profile=DIP)
         assert result.converged
-        force = result.contact_force(result.one_period(4096))
+        force = result.contact_force(result.one_period(4096)[0])
         np.testing.assert_allclose(force.mean(axis=1), Q, rtol=1e-8)
         swings.append(np.ptp(force, axis=1))
     np.testing.assert_allclose(swings[1] / swings[0], 4.0, rtol=0.03)
@@ -173,7 +173,7 @@ def test_a_residual_at_its_round_off_floor_is_judged_by_newtons_correction():
         warnings.simplefilter("error", ConvergenceWarning)
         result = rt.solve(TRACK, train(1.0), LAW, 120, wheel=WHEEL, profile=DIP)
     coarse = rt.solve(TRACK, train(1.0), LAW, 60, wheel=WHEEL, profile=DIP)
-    t = result.one_period(4096)
+    t = result.one_period(4096)[0]
     assert result.converged
     # the same quasi-static force as at m = 60 to 2 N in 75 kN (its swing is 11 N)
     assert np.abs(result.contact_force(t) - coarse.contact_force(t)).max() < 2.0
@@ -185,7 +185,7 @@ def test_a_budget_that_ends_at_the_round_off_floor_is_converged_and_says_so():
     # there was far below tol.  1 m/s, m = 120: the floor is near 1e-10..2e-9 of Q,
     # Newton's correction there near 1e-11
     reference = rt.solve(TRACK, train(1.0), LAW, 120, wheel=WHEEL, profile=DIP)
-    t = reference.one_period(4096)
+    t = reference.one_period(4096)[0]
     for tol, budget in ((1e-9, 3), (5e-11, 8)):
         with warnings.catch_warnings():
             warnings.simplefilter("error", ConvergenceWarning)

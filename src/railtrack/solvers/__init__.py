@@ -12,7 +12,11 @@ judged), and for a cell of N sleepers `cell_newton`,
 `cell_step` (its structured Newton step), `cell_auto` (m = "auto"),
 `cell_truncation` (its truncation estimate, in the Floquet modes),
 `cell_static` (the track under its own weight), `cell_solution` and
-`cell_floquet` (its Floquet multipliers, Hill's matrix of the cell).
+`cell_floquet` (its Floquet multipliers, Hill's matrix of the cell);
+`result_protocol` (the questions every steady-state result answers, alike)
+and `result_repr` (their short reprs and HTML tables); `convergence` (the
+errors and warnings of a solve that fell short); `wheel_extremes` (a wheel
+solution's contact force over a period).
 
 Imports: `railtrack.model` and `railtrack.equations`.
 """

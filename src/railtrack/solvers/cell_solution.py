@@ -4,7 +4,8 @@ Every output is per sleeper of the cell (first axis j = 0..N-1, sleeper j at
 x = jL), or along the rail at any x; sleeper j + pN repeats sleeper j
 delayed by pNL/v.  Signs as `railtrack.Solution`: displacements positive
 upward, rail-seat load and foundation force positive in compression,
-bending moment positive when sagging.
+bending moment positive when sagging.  The questions and axes are those of
+every steady-state result (`railtrack.solvers.result_protocol`).
 """
 
 from __future__ import annotations
@@ -21,6 +22,9 @@ from ..equations.positions import check_positions, checked_times
 from ..model.passage import Passage
 from .cell_static import cell_at_rest
 from .field_chunks import CHUNK_ENTRIES, fourier_field
+from .result_repr import result_html, result_repr
+from .result_protocol import (contact_fraction, moving_contact_force, one_period,
+                              rail_under_wheels, wheel_positions)
 
 __all__ = ["CellSolution"]
 
@@ -130,8 +134,7 @@ class CellSolution:
 
     def contact_fraction(self, samples: int = 2048) -> np.ndarray:
         """Share of the period in which each sleeper presses on its foundation (force > 0) [-]."""
-        t = np.arange(samples) * self.period / samples
-        return np.mean(self.foundation_force(t) > 0.0, axis=-1)
+        return contact_fraction(self, samples)
 
     def rail_above_sleepers(self, t: ArrayLike) -> np.ndarray:
         """Rail above each sleeper, w_j + p_j / (k1_j + eta1_j d/dt) [m], (N,) + t.shape."""
@@ -202,7 +205,32 @@ class CellSolution:
         """
         return cell_at_rest(self.passage, self.cell)
 
-    def one_period(self, samples: int = 400) -> tuple[np.ndarray, np.ndarray]:
-        """Times over [0, T) [s] and every sleeper's w there, (samples,) and (N, samples) [m]."""
-        t = np.linspace(0.0, self.period, samples, endpoint=False)
-        return t, self.sleeper_displacement(t)
+    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(t, w): times over [0, T) [s], (samples,), and every sleeper's w, (N, samples) [m].
+
+        max(400, 4 m) samples by default (`railtrack.solvers.result_protocol`).
+        """
+        return one_period(self, samples)
+
+    @property
+    def sleeper_shape(self) -> tuple[int, ...]:
+        """(N,): per-sleeper outputs are (N,) + t.shape (`result_protocol`)."""
+        return (self.sleepers,)
+
+    def wheel_position(self, t: ArrayLike) -> np.ndarray:
+        """x_k(t) = v t - d_k [m], wheel k past sleeper 0; (K,) + t.shape."""
+        return wheel_positions(self.passage, t)
+
+    def contact_force(self, t: ArrayLike) -> np.ndarray:
+        """Q_k at every t [N], (K,) + t.shape: the loads move at constant force."""
+        return moving_contact_force(self.passage, t)
+
+    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
+        """The rail at each wheel's contact point [m], (K,) + t.shape."""
+        return rail_under_wheels(self, t)
+
+    def __repr__(self) -> str:
+        return result_repr(self)
+
+    def _repr_html_(self) -> str:
+        return result_html(self)

@@ -165,6 +165,14 @@ class Floquet:
             raise ValueError(f"verdict must be one of {VERDICTS}; got {self.verdict!r}")
         object.__setattr__(self, "stable", {"stable": True, "unstable": False}.get(self.verdict))
 
+    def __repr__(self) -> str:
+        from .result_repr import result_repr
+        return result_repr(self)
+
+    def _repr_html_(self) -> str:
+        from .result_repr import result_html
+        return result_html(self)
+
 
 def growth_bound(solution) -> float:
     """An estimate of the largest |mu| per period T = H / v any disturbance of `solution` can have [-].

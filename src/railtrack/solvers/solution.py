@@ -1,4 +1,13 @@
-"""The result of a solve: Fourier coefficients and the time histories they define."""
+"""The result of a solve: Fourier coefficients and the time histories they define.
+
+`Solution` is a cell of one sleeper: every sleeper of a uniform track moves
+as the observed one, delayed by L / v, so its per-sleeper outputs keep no
+sleeper axis (``sleeper_shape == ()``); otherwise it answers the questions of
+`railtrack.CellSolution` and `railtrack.WheelSolution` under the same names,
+arguments and axis order (wheels first, time last), and the same
+`one_period` (`railtrack.solvers.result_protocol`).  Its repr is a dozen
+lines (`railtrack.solvers.result_repr`).
+"""
 
 from __future__ import annotations
 
@@ -15,7 +24,11 @@ from ..equations.bowl import DeflectionBowl, deflection_bowl
 from ..equations.load import load_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
 from ..equations.positions import checked_times
+from .convergence import ConvergenceError, ConvergenceWarning, TruncationWarning
 from .output_errors import output_truncation_errors
+from .result_repr import result_html, result_repr
+from .result_protocol import (contact_fraction, moving_contact_force, one_period,
+                              rail_under_wheels, single_at_rest, wheel_positions)
 
 __all__ = ["Solution", "ConvergenceError", "ConvergenceWarning", "TruncationWarning", "DeflectionBowl",
            "fourier_series"]
@@ -26,42 +39,6 @@ def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) ->
     t = checked_times(omega, t)
     phases = np.exp(1j * np.multiply.outer(t, omega))
     return (phases @ coefficients).real
-
-
-class ConvergenceError(RuntimeError):
-    """Raised by ``solve(..., strict=True)`` when the iteration did not converge.
-
-    Attributes
-    ----------
-    solution : Solution
-        The unconverged result.
-    slow_harmonics : list of int
-        Harmonics whose residual shrank by less than 10 % per step, or grew.
-    """
-
-    def __init__(self, message: str, solution: "Solution", slow_harmonics: list[int]):
-        super().__init__(message)
-        self.solution = solution
-        self.slow_harmonics = slow_harmonics
-
-
-class ConvergenceWarning(UserWarning):
-    """A solve returned ``converged=False``: its answer is not a solution of eq. (17).
-
-    Issued by `railtrack.solve` (and the studies built on it) unless
-    ``strict=True``, which raises `ConvergenceError` instead.  The message
-    says why the iteration stopped and what to try; where Newton stalls as
-    it does near a fold of the response curve, it names `railtrack.continuation`.
-    Silence it with ``warnings.simplefilter("ignore", rt.ConvergenceWarning)``.
-    """
-
-
-class TruncationWarning(UserWarning):
-    """An explicit number of harmonics m leaves an estimated truncation error above 1 %.
-
-    The message names m, the estimate and the fix (``harmonics="auto"`` or a
-    larger m).  See `railtrack.solvers.truncation`.
-    """
 
 
 @dataclass(frozen=True, eq=False)
@@ -290,18 +267,16 @@ class Solution:
     def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
         """Rail displacement at the contact point of each axle of a wagon [m].
 
-        Axle j (offset d_j behind the wagon's first axle) is at x = v t - d_j
-        at time t, so this is ``rail_displacement(t, v t - d_j)``.
+        Axle k (offset d_k behind the wagon's first axle) is at x = v t - d_k
+        at time t, so this is ``rail_displacement(t, v t - d_k)``.
 
         Returns
         -------
-        ndarray, shape t.shape + (J,)
-            [..., j] under axle j, in the order of ``train.axle_positions``.
+        ndarray, shape (K,) + t.shape
+            [k, ...] under axle k, in the order of ``train.axle_positions``
+            (wheels first, time last, as every result: `result_protocol`).
         """
-        t = np.asarray(t, dtype=float)
-        offsets = np.asarray(self.passage.axle_positions, dtype=float)
-        times = np.broadcast_to(t[..., None], t.shape + offsets.shape)
-        return self.rail_displacement(times, float(self.passage.speed) * times - offsets)
+        return rail_under_wheels(self, t)
 
     def deflection_bowl(self, t: ArrayLike, x: ArrayLike) -> DeflectionBowl:
         """The rail and the sleepers along the track at one instant, or at several [m].
@@ -310,7 +285,37 @@ class Solution:
         """
         return deflection_bowl(self, t, x)
 
-    def one_period(self, samples: int = 400) -> tuple[np.ndarray, np.ndarray]:
-        """Times over [0, T) and w at those times, handy for plotting [s], [m]."""
-        t = np.linspace(0.0, self.period, samples, endpoint=False)
-        return t, self.sleeper_displacement(t)
+    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(t, w): `samples` times over [0, T) [s] and w there [m]; max(400, 4 m) by default."""
+        return one_period(self, samples)
+
+    @property
+    def sleeper_shape(self) -> tuple[int, ...]:
+        """(), the sleeper axis of a cell of one sleeper dropped (`result_protocol`)."""
+        return ()
+
+    def rail_above_sleepers(self, t: ArrayLike) -> np.ndarray:
+        """The rail above the sleeper, ``rail_displacement(t, 0)`` [m], shape of t."""
+        return self.rail_displacement(t, 0.0)
+
+    def wheel_position(self, t: ArrayLike) -> np.ndarray:
+        """x_k(t) = v t - d_k [m], wheel k past the observed sleeper; (K,) + t.shape."""
+        return wheel_positions(self.passage, t)
+
+    def contact_force(self, t: ArrayLike) -> np.ndarray:
+        """Q_k at every t [N], (K,) + t.shape: the loads move at constant force."""
+        return moving_contact_force(self.passage, t)
+
+    def contact_fraction(self, samples: int = 2048) -> np.ndarray:
+        """Share of the period with the foundation in compression [-] (`result_protocol`)."""
+        return contact_fraction(self, samples)
+
+    def at_rest(self):
+        """The sleeper before the train arrives (this model has no self-weight): 0 N, 0 m."""
+        return single_at_rest(self.passage, self.foundation)
+
+    def __repr__(self) -> str:
+        return result_repr(self)
+
+    def _repr_html_(self) -> str:
+        return result_html(self)

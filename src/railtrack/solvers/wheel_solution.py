@@ -6,7 +6,9 @@ delta_k(t) [m], the wheel's displacement z_k(t) [m], positive upward; and,
 through `sleepers` (a `railtrack.CellSolution` loaded by the wheels' actual
 forces), every sleeper's displacement, rail-seat load and foundation force.
 t = 0 has axle 1 above sleeper 0, as in `railtrack.Solution`; wheel k is at
-x = vt - d_k along the track.
+x = vt - d_k along the track.  It answers the questions every steady-state
+result answers, alike (`railtrack.solvers.result_protocol`): `one_period`
+gives (t, w), ``one_period(n)[0]`` the times alone.
 """
 
 from __future__ import annotations
@@ -22,9 +24,11 @@ from ..equations.moment import kink_sum
 from ..equations.positions import check_positions, checked_times
 from ..equations.wheel_train_receptance import wheel_train_receptance
 from ..model.passage import Passage
-from .arguments import require_count
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
+from .result_repr import result_html, result_repr
+from .wheel_extremes import anchor_sag, extremes, loss_of_contact
+from .result_protocol import one_period, rail_under_wheels, wheel_positions
 
 __all__ = ["WheelSolution"]
 
@@ -121,9 +125,7 @@ class WheelSolution:
         Take it modulo the wagon length H to read it within one wagon, where
         the profile and the cell repeat.
         """
-        t = np.asarray(t, dtype=float)
-        d = np.asarray(self.passage.axle_positions, dtype=float)
-        return float(self.passage.speed) * t[None] - d.reshape((-1,) + (1,) * t.ndim)
+        return wheel_positions(self.passage, t)
 
     def compression(self, t: ArrayLike) -> np.ndarray:
         """delta_k(t) [m], shape (K,) + t.shape; the wheel is off the rail where < 0."""
@@ -163,25 +165,8 @@ class WheelSolution:
 
     @cached_property
     def _anchor_sag(self) -> float:
-        """The static sag at sleeper 0 of the wheels' uneven mean load [m].
-
-        The rail field of `sleepers` anchors its mean at sleeper 0 under a
-        uniform mean load; where the wheels' force varies along the track
-        their mean load is not uniform, q(x) = sum_k P_k(x) / H, and the free
-        rail of the cell's period sags under its varying part by
-        ``sum_k mean_t[(P_k - mean P_k) Lambda^3 B4(x_k / Lambda)] / (24 EI)`` at
-        sleeper 0 (Bernoulli's B4, `railtrack.equations.cell_rail_field`).
-        Computed once per solution: it takes the contact force over a finely
-        sampled period.
-        """
-        cell = self.sleepers.cell.sleepers * float(self.passage.sleeper_spacing)
-        t = self.one_period(4 * self.sleepers.samples)     # the force's kinks want samples
-        force = self.contact_force(t)
-        u = np.mod(self.wheel_position(t) / cell, 1.0)
-        shape = u**4 - 2 * u**3 + u**2 - 1.0 / 30.0
-        varying = force - force.mean(axis=1, keepdims=True)
-        return float(np.sum(np.mean(varying * shape, axis=1)) * cell**3
-                     / (24 * float(self.passage.rail_bending_stiffness)))
+        """The static sag at sleeper 0 of the wheels' uneven mean load [m] (`anchor_sag`)."""
+        return anchor_sag(self)
 
     def _free_rail(self, t: ArrayLike, x: ArrayLike, derivative: int) -> np.ndarray:
         """The free rail under the wheels' varying forces, eq. (13.2) at (t, x) [m or 1/m].
@@ -229,17 +214,23 @@ class WheelSolution:
         return (self.sleepers._field(t, x, 0) + self._free_rail(t, x, 0)
                 - self._anchor_sag)
 
-    def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0) -> np.ndarray:
+    def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
+                            kinks: str = "closed form") -> np.ndarray:
         """EI d^2 w_r/dx^2 at time t [s] and position x [m] [N m], sagging positive.
 
         `railtrack.CellSolution.rail_bending_moment` (the static loads' kinks in
-        closed form) plus EI times the curvature of eq. (13.2), which is
-        continuous across the wheel.
+        closed form, or ``kinks="series"``: the plain truncated series) plus EI
+        times the curvature of eq. (13.2), which is continuous across the wheel.
         """
         self._check_positions(x)
         ei = float(self.passage.rail_bending_stiffness)
-        return (ei * self.sleepers._field(t, x, 1) + kink_sum(self.passage, t, x)
-                + ei * self._free_rail(t, x, 2))
+        if kinks == "closed form":
+            static = ei * self.sleepers._field(t, x, 1) + kink_sum(self.passage, t, x)
+        elif kinks == "series":
+            static = ei * self.sleepers._field(t, x, 2)
+        else:
+            raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
+        return static + ei * self._free_rail(t, x, 2)
 
     def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
         """Each sleeper's rail-seat load [N], (N,) + t.shape, positive in compression."""
@@ -249,37 +240,68 @@ class WheelSolution:
         """Each sleeper's w_j(t) [m], (N,) + t.shape, positive upward."""
         return self.sleepers.sleeper_displacement(t)
 
-    def one_period(self, samples: int = 2048) -> np.ndarray:
-        """Times over [0, T) [s], ``samples`` of them."""
-        return np.linspace(0.0, self.period, int(samples), endpoint=False)
-
     def extremes(self, samples: int = 4096) -> dict[str, np.ndarray]:
         """Per wheel: largest and smallest P [N], where they occur [m], mean P [N].
 
         Positions are the wheel's distance from sleeper 0 along the track,
         within one wagon length (0 <= x < H); ``dynamic_factor`` is max P / Q.
-        `samples` >= 1 times over the period.
+        `samples` >= 1 times over the period (`wheel_extremes.extremes`).
         """
-        t = self.one_period(require_count("samples", samples, 1))
-        force = self.contact_force(t)
-        where = np.mod(self.wheel_position(t), float(self.passage.wagon_length))
-        rows = np.arange(force.shape[0])
-        top, bottom = force.argmax(axis=1), force.argmin(axis=1)
-        return {"max": force[rows, top], "where_max": where[rows, top],
-                "min": force[rows, bottom], "where_min": where[rows, bottom],
-                "mean": force.mean(axis=1),
-                "dynamic_factor": force[rows, top] / np.asarray(self.passage.axle_loads)}
+        return extremes(self, samples)
 
     def loss_of_contact(self, samples: int = 8192) -> tuple[np.ndarray, np.ndarray]:
         """Per wheel: the share of the period off the rail, and the longest spell off it [s]."""
-        off = self.compression(self.one_period(samples)) <= 0.0
-        dt = self.period / samples
-        longest = np.zeros(off.shape[0])
-        for k, row in enumerate(off):
-            if row.all():
-                longest[k] = self.period
-                continue
-            rolled = np.roll(row, -int(np.argmin(row)))        # start on the rail
-            runs = np.diff(np.flatnonzero(np.diff(np.r_[0, rolled.astype(int), 0])))[::2]
-            longest[k] = runs.max() * dt if runs.size else 0.0
-        return off.mean(axis=1), longest
+        return loss_of_contact(self, samples)
+
+    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(t, w): times over [0, T) [s] and every sleeper's w there, (N, samples) [m].
+
+        max(400, 4 m) samples by default (`railtrack.solvers.result_protocol`);
+        ``one_period(n)[0]`` are the times alone, e.g. for `contact_force`.
+        """
+        return one_period(self, samples)
+
+    @property
+    def frequencies(self) -> np.ndarray:
+        """omega_n, n = -m..m [rad/s], of the sleepers' series."""
+        return self.sleepers.frequencies
+
+    @property
+    def stability(self) -> None:
+        """None: a wheel solution is not judged by Floquet (yet)."""
+        return None
+
+    @property
+    def sleeper_shape(self) -> tuple[int, ...]:
+        """(N,): per-sleeper outputs are (N,) + t.shape (`result_protocol`)."""
+        return self.sleepers.sleeper_shape
+
+    def sleeper_velocity(self, t: ArrayLike) -> np.ndarray:
+        """Each sleeper's w_j'(t) [m/s], (N,) + t.shape."""
+        return self.sleepers.sleeper_velocity(t)
+
+    def foundation_force(self, t: ArrayLike) -> np.ndarray:
+        """Each sleeper's force on its foundation [N], (N,) + t.shape, positive in compression."""
+        return self.sleepers.foundation_force(t)
+
+    def rail_above_sleepers(self, t: ArrayLike) -> np.ndarray:
+        """The rail above each sleeper (through its pad) [m], (N,) + t.shape."""
+        return self.sleepers.rail_above_sleepers(t)
+
+    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
+        """The rail at each wheel's contact point [m], (K,) + t.shape."""
+        return rail_under_wheels(self, t)
+
+    def contact_fraction(self, samples: int = 2048) -> np.ndarray:
+        """Share of the period in which each sleeper presses on its foundation [-]."""
+        return self.sleepers.contact_fraction(samples)
+
+    def at_rest(self):
+        """The track under its own weight before the train arrives (`CellSolution.at_rest`)."""
+        return self.sleepers.at_rest()
+
+    def __repr__(self) -> str:
+        return result_repr(self)
+
+    def _repr_html_(self) -> str:
+        return result_html(self)

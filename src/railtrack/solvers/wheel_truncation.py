@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .result_protocol import period_times
 from .wheel_newton import solve_wheels
 from .wheel_rounds import wrap
 
@@ -58,7 +59,7 @@ def wheel_truncation(solution) -> float:
                            start=(solution.contact_harmonics, solution.lift,
                                   solution.sleepers.coefficients[:, m:]))
     finer = wrap(solution.passage, solution.wheel, solution.profile, refined)
-    t = solution.one_period(POINTS)
+    t = period_times(solution.period, POINTS)
     change = np.abs(finer.contact_force(t) - solution.contact_force(t))
     if not np.all(np.isfinite(change)):
         return float("nan")

@@ -5,7 +5,8 @@
 (does the ring stay on a solution?), `branch_stability` (the same along a
 branch), `ramp` (the ring through rising or falling speeds),
 `hanging_sleeper` (the extremes around a void, from either method) and
-`random_support` (a Monte Carlo over sleepers' ballast stiffness).
+`random_support` (a Monte Carlo over sleepers' ballast stiffness);
+`study_repr` (their short reprs and HTML tables).
 
 Imports: any layer below: `railtrack.model`, `railtrack.equations`,
 `railtrack.solvers`, `railtrack.timedomain`.

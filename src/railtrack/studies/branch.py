@@ -22,6 +22,7 @@ from ..solvers.solution import Solution
 from ..model.track import Track
 from ..model.train import Train
 from ..solvers.truncation import truncation_error
+from .study_repr import study_html, study_repr
 
 __all__ = ["Branch", "Fold", "StabilityChange", "TRACK_FIELDS", "TRAIN_FIELDS", "replaced", "check_parameter",
            "scalar", "hermite_turning_value"]
@@ -288,3 +289,9 @@ class Branch:
         c = np.asarray(self.coefficients)
         rows = [(1 - w) * c[i] + w * c[j] for i, j, w in zip(before, after, weight)]
         return np.array(rows).reshape(-1, self.harmonics + 1)
+
+    def __repr__(self) -> str:
+        return study_repr(self)
+
+    def _repr_html_(self) -> str:
+        return study_html(self)

@@ -53,6 +53,7 @@ from ..solvers.chunk_map import chunk_bounds, map_chunks, show_progress
 from ..solvers.solution import TruncationWarning
 from ..solvers.stability_hint import UnstableSolutionWarning, cell_verdict
 from .random_support_batch import POINTS_PER_SPAN, TIMES, linear_draws
+from .study_repr import study_html, study_repr
 
 __all__ = ["RandomSupport", "random_support", "scaled_law", "lognormal_factors"]
 
@@ -140,6 +141,12 @@ class RandomSupport:
                              "to give; see .converged and .harmonics, and try more harmonics")
         return {"peak_seat_load": np.quantile(self.peak_seat_load[ok], q),
                 "peak_moment": np.quantile(self.peak_moment[ok], q)}
+
+    def __repr__(self) -> str:
+        return study_repr(self)
+
+    def _repr_html_(self) -> str:
+        return study_html(self)
 
 
 def _peaks(solution) -> tuple[float, float]:

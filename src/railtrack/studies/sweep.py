@@ -49,6 +49,7 @@ from .sweep_members import (BLOCK, MAX_RESULT_BYTES, check_members_conditioning,
                             polynomial_samples, predicted_harmonics, require_fits, rows,
                             solve_block, split_fields)
 from .sweep_stability import member_stability, require_whole_sleepers, stability_mode
+from .study_repr import study_html, study_repr
 
 __all__ = ["Sweep", "sweep", "BLOCK", "MAX_RESULT_BYTES"]
 
@@ -135,6 +136,12 @@ class Sweep:
             truncation_error=float(self.truncation_error[index]),
             message=f"member {index} of a sweep: {state}, relative residual "
                     f"{self.residual[index]:.2e} after {self.iterations[index]} Newton steps")
+
+    def __repr__(self) -> str:
+        return study_repr(self)
+
+    def _repr_html_(self) -> str:
+        return study_html(self)
 
 
 def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto", *,

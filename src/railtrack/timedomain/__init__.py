@@ -9,8 +9,8 @@ step and its error (`timestep`), the run's cost estimated beforehand
 `ring_fields`), a cell of differing sleepers laid along it (`ring_cell`; its linearised
 map, `cell_span_map`),
 wheels of mass on Hertz springs over a rail-top profile (`ring_wheels`,
-`ring_contact`), its result (`td_solution`) and the spectrum of a record
-(`spectrum`).
+`ring_contact`), its result (`td_solution`, its short repr `td_repr`) and the
+spectrum of a record (`spectrum`).
 
 Imports: `railtrack.model`, `railtrack.equations` and `railtrack.solvers`.
 """

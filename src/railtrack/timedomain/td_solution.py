@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from ..model.passage import Passage
+from .td_repr import time_domain_html, time_domain_repr
 
 __all__ = ["TimeDomainSolution"]
 
@@ -141,3 +142,9 @@ class TimeDomainSolution:
             raise ValueError("this solution has no wheels: run simulate_time_domain(..., "
                              "wheel=Wheel(...)) for contact forces")
         return loss_of_contact(self.contact_forces, float(self.times[1] - self.times[0]))
+
+    def __repr__(self) -> str:
+        return time_domain_repr(self)
+
+    def _repr_html_(self) -> str:
+        return time_domain_html(self)

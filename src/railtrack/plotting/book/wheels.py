@@ -41,7 +41,7 @@ def plot_contact_along_track(solutions: dict, wheel: int = 0, window: tuple[floa
     wagon, span = float(first.passage.wagon_length), float(first.passage.sleeper_spacing)
     lo, hi = (0.0, wagon) if window is None else window
     for i, (label, solution) in enumerate(solutions.items()):
-        t = solution.one_period(samples)
+        t = solution.one_period(samples)[0]
         x = np.mod(solution.wheel_position(t)[wheel], wagon)
         order = np.argsort(x)
         force = solution.contact_force(t)[wheel][order] * KN
@@ -84,7 +84,7 @@ def plot_loss_of_contact(solution, window: tuple[float, float], samples: int = 1
     """
     fig, axes = new_figure(2, 1, width=7.0, height=4.2, sharex=True)
     wagon = float(solution.passage.wagon_length)
-    t = solution.one_period(samples)
+    t = solution.one_period(samples)[0]
     force, compression = solution.contact_force(t) * KN, solution.compression(t) * 1e6
     for k, x in enumerate(np.mod(solution.wheel_position(t), wagon)):
         order = np.argsort(x)
