@@ -33,6 +33,7 @@ PUBLIC = {
     "random_support", "RandomSupport", "Wheel", "CosineDip", "WheelSolution",
     "TimoshenkoRail", "p2_force", "EquivalentTrack", "equivalent_track",
 }
+PUBLIC |= {"RailSection", "UIC60", "UIC54", "DesignSummary", "eisenmann_factor"}   # issue 29
 
 
 def _modules():

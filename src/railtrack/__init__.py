@@ -69,6 +69,8 @@ from .model.timoshenko import TimoshenkoRail
 from .studies.p2_force import EquivalentTrack, equivalent_track, p2_force
 from .model.track import Track
 from .model.train import Train
+from .model.rail_section import RailSection, UIC54, UIC60
+from .solvers.design_summary import DesignSummary, eisenmann_factor
 
 
 def explore(**initial):
@@ -146,4 +148,9 @@ __all__ = [
     "dissipation",
     "Dissipation",
     "load_work",
+    "RailSection",
+    "UIC60",
+    "UIC54",
+    "DesignSummary",
+    "eisenmann_factor",
 ]

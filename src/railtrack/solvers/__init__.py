@@ -12,7 +12,9 @@ judged), and for a cell of N sleepers `cell_newton`,
 `cell_step` (its structured Newton step), `cell_auto` (m = "auto"),
 `cell_truncation` (its truncation estimate, in the Floquet modes),
 `cell_static` (the track under its own weight), `cell_solution` and
-`cell_floquet` (its Floquet multipliers, Hill's matrix of the cell).
+`cell_floquet` (its Floquet multipliers, Hill's matrix of the cell);
+`design_figures` and `design_summary` (the ``summary()`` of every result:
+seat load, ballast pressure, rail moment and stress, dynamic factor).
 
 Imports: `railtrack.model` and `railtrack.equations`.
 """

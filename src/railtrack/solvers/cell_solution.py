@@ -206,3 +206,12 @@ class CellSolution:
         """Times over [0, T) [s] and every sleeper's w there, (samples,) and (N, samples) [m]."""
         t = np.linspace(0.0, self.period, samples, endpoint=False)
         return t, self.sleeper_displacement(t)
+
+    def summary(self, **options):
+        """Design figures per sleeper in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
+
+        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
+        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
+        """
+        from .design_figures import design_summary
+        return design_summary(self, **options)

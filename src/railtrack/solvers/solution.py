@@ -314,3 +314,12 @@ class Solution:
         """Times over [0, T) and w at those times, handy for plotting [s], [m]."""
         t = np.linspace(0.0, self.period, samples, endpoint=False)
         return t, self.sleeper_displacement(t)
+
+    def summary(self, **options):
+        """Design figures in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
+
+        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
+        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
+        """
+        from .design_figures import design_summary
+        return design_summary(self, **options)

@@ -283,3 +283,12 @@ class WheelSolution:
             runs = np.diff(np.flatnonzero(np.diff(np.r_[0, rolled.astype(int), 0])))[::2]
             longest[k] = runs.max() * dt if runs.size else 0.0
         return off.mean(axis=1), longest
+
+    def summary(self, **options):
+        """Design figures; max P / Q beside Eisenmann's factor in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
+
+        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
+        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
+        """
+        from .design_figures import design_summary
+        return design_summary(self, **options)
