@@ -227,3 +227,26 @@ def test_random_supports_summary_is_still_its_line():
                              np.array([True, False]), np.array([20, 20]),
                              np.array(["stable", "unknown"]))
     assert study.summary().startswith("2 draws (variation 0.3): 1 converged")
+
+
+def test_the_mean_seat_load_is_the_statics_of_the_train_and_the_rail():
+    # averaged over the period and the sleepers, the pads carry the train's load
+    # share sum Q L / H and, with gravity, the rail's weight rho S g L
+    track = rt.Track.paper()
+    passage = rt.Passage(track, rt.Train.paper())
+    cell = rt.SleeperCell.identical(passage, rt.LinearFoundation(20e6, 0.2e6), 3,
+                                    gravity=9.81).with_sleeper(1, foundation=rt.LinearFoundation(5e6))
+    solution = rt.solve(track, rt.Train.paper(), cell)
+    statics = 2 * 75e3 * 0.6 / 18.0 + 60.0 * 9.81 * 0.6
+    assert solution.summary().mean_rail_seat_load == pytest.approx(statics, rel=1e-12)
+    t = np.arange(4096) * solution.period / 4096
+    assert solution.rail_seat_load(t).mean() == pytest.approx(statics, rel=1e-6)
+
+
+def test_eisenmann_beyond_its_range_is_said_to_be_extrapolated():
+    law, wheel = rt.LinearFoundation(20e6, 0.2e6), rt.Wheel(600.0)
+    fast = rt.solve(rt.Track.paper(), rt.Train.paper(speed=70.0), law, wheel=wheel).summary()
+    slow = rt.solve(rt.Track.paper(), rt.Train.paper(speed=40.0), law, wheel=wheel).summary()
+    assert "extrapolated" in fast.eisenmann_basis and "extrapolated" not in slow.eisenmann_basis
+    assert fast.eisenmann == pytest.approx(1 + 0.6 * (1 + (252 - 60) / 140))
+    assert "Eisenmann" in repr(slow) and len(repr(fast).splitlines()) <= 15

@@ -141,10 +141,11 @@ def design_summary(solution, *, section: RailSection | None = None, bearing_area
     passage = solution.passage
     wheels = hasattr(solution, "contact_harmonics")
     cell_solution = solution.sleepers if wheels else solution
-    sleepers = int(cell_solution.sleepers) if hasattr(solution, "sleepers") else 1
+    if not hasattr(cell_solution, "seat_harmonics"):    # the single-sleeper Solution
+        cell_solution = None
+    sleepers = 1 if cell_solution is None else int(cell_solution.coefficients.shape[0])
     n = max(2048, 1 << int(np.ceil(np.log2(4 * (_top_harmonic(solution) + 1)))))
-    seat, foundation = (_peak(history, 1.0) for history in _histories(
-        solution, cell_solution if hasattr(solution, "sleepers") else None, n))
+    seat, foundation = (_peak(history, 1.0) for history in _histories(solution, cell_solution, n))
     # the free rail under the wheels costs a receptance per harmonic and point: fewer points
     sagging, hogging = _moments(solution, sleepers, points_per_span,
                                 (2, 4) if wheels else (4, 8))
@@ -168,9 +169,8 @@ def design_summary(solution, *, section: RailSection | None = None, bearing_area
         share, longest = solution.loss_of_contact(max(8192, n))
         phi = eisenmann_factor(passage.speed, track_quality, certainty)
         s = TRACK_QUALITY.get(track_quality, track_quality)
-        kmh = 3.6 * float(passage.speed)
-        basis = f"s = {float(s):g}, t = {float(certainty):g}, V = {kmh:.0f} km/h"
-        if kmh > EISENMANN_RANGE_KMH:
+        basis = f"s = {float(s):g}, t = {float(certainty):g}"
+        if 3.6 * float(passage.speed) > EISENMANN_RANGE_KMH:
             basis += ", extrapolated beyond 200 km/h"
         extra = dict(contact_force_max=e["max"], contact_force_min=e["min"],
                      dynamic_factor=e["dynamic_factor"], contact_loss_share=share,

@@ -104,8 +104,9 @@ class DesignSummary:
     rail_seat_loads : ndarray, shape (N,)
         Each sleeper's largest rail-seat load over the period [N].
     mean_rail_seat_load : float
-        Its mean over the period, sum_j Q_j L / H [N] (statics; with the
-        track's own weight when the solution has gravity).
+        The rail-seat load averaged over the period and the cell's sleepers,
+        from statics: sum_j Q_j L / H, plus the rail's weight rho S g L when
+        the cell has gravity [N].
     foundation_forces : ndarray, shape (N,)
         Each sleeper's largest force on its foundation (ballast) [N].
     bearing_area : float or None
@@ -239,7 +240,7 @@ class DesignSummary:
             lines += [f"  wheel-rail force        {np.max(self.contact_force_max) / 1e3:.1f} / "
                       f"{np.min(self.contact_force_min) / 1e3:.1f} kN (max / min)",
                       f"  dynamic factor max P/Q  {np.max(self.dynamic_factor):.3f}; Eisenmann "
-                      f"{self.eisenmann:.2f} ({self.eisenmann_basis}; order of magnitude only)",
+                      f"{self.eisenmann:.2f} ({self.eisenmann_basis}; an order of magnitude)",
                       f"  loss of contact         {100 * np.max(self.contact_loss_share):.1f} % "
                       f"of the period, longest {1e3 * np.max(self.contact_loss_longest):.1f} ms"]
         lines += [f"  note: {note}" for note in self.notes[:2]]
