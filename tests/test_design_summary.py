@@ -156,6 +156,7 @@ def test_a_cell_of_identical_sleepers_gives_the_single_sleepers_figures():
     assert many.hogging_moment == pytest.approx(one.hogging_moment, rel=5e-3)
     rows = many.to_dataframe()
     assert "rail-seat load, largest, sleeper 3" in set(rows["quantity"])
+    assert "sleeper 3" not in many._repr_html_() and "kN m" in many._repr_html_()
 
 
 @pytest.fixture(scope="module")

@@ -176,8 +176,12 @@ class DesignSummary:
         """Hogging moment over W_foot: the foot's largest compression, negative [Pa]."""
         return float(self.section.foot_stress(self.hogging_moment))
 
-    def rows(self) -> list[tuple[str, float, str]]:
-        """(quantity, value, unit) in the trade's units, the rows of `to_dataframe`."""
+    def rows(self, details: bool = True) -> list[tuple[str, float, str]]:
+        """(quantity, value, unit) in the trade's units, the rows of `to_dataframe`.
+
+        With `details`, also each sleeper's and each wheel's largest values
+        (where the cell has more than one sleeper, the wagon more than one wheel).
+        """
         kilo = 1e-3
         rows = [("speed", 3.6 * self.speed, "km/h"),
                 ("wheel load Q (static, largest)", kilo * self.wheel_load, "kN"),
@@ -202,23 +206,36 @@ class DesignSummary:
                       100 * float(np.max(self.contact_loss_share)), "%"),
                      ("loss of contact, longest spell",
                       1e3 * float(np.max(self.contact_loss_longest)), "ms")]
-        many = self.rail_seat_loads.size > 1
+        many = details and self.rail_seat_loads.size > 1
         for j in range(self.rail_seat_loads.size if many else 0):
             rows += [(f"rail-seat load, largest, sleeper {j}", kilo * self.rail_seat_loads[j], "kN"),
                      (f"foundation force, largest, sleeper {j}",
                       kilo * self.foundation_forces[j], "kN")]
-        wheels = 0 if self.dynamic_factor is None else np.size(self.dynamic_factor)
+        wheels = 0 if self.dynamic_factor is None or not details else np.size(self.dynamic_factor)
         for k in range(wheels if wheels > 1 else 0):
             rows += [(f"wheel-rail force, largest, wheel {k}",
                       kilo * self.contact_force_max[k], "kN"),
                      (f"dynamic factor max P/Q, wheel {k}", self.dynamic_factor[k], "-")]
         return [(name, float(value), unit) for name, value, unit in rows]
 
-    def to_dataframe(self):
-        """The figures as a pandas DataFrame: columns quantity, value, unit (trade units)."""
+    def to_dataframe(self, details: bool = True):
+        """The figures as a pandas DataFrame: columns quantity, value, unit (trade units).
+
+        `details` as `rows`: per sleeper and per wheel too.
+        """
         import pandas as pd
 
-        return pd.DataFrame(self.rows(), columns=["quantity", "value", "unit"])
+        return pd.DataFrame(self.rows(details), columns=["quantity", "value", "unit"])
+
+    def _repr_html_(self) -> str:
+        """The overall figures as a table, for notebooks (per sleeper: `to_dataframe`)."""
+        import html
+
+        head = f"<p><b>DesignSummary</b>: {html.escape(self.case)}"
+        head += "" if self.converged else " <b>(NOT converged)</b>"
+        notes = "".join(f"<br><i>note: {html.escape(note)}</i>" for note in self.notes)
+        table = self.to_dataframe(details=False).to_html(index=False, float_format="{:.4g}".format)
+        return f"{head}{notes}</p>{table}"
 
     def __repr__(self) -> str:
         lines = [f"DesignSummary: {self.case}{'' if self.converged else ' (NOT converged)'}"]
