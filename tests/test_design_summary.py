@@ -129,8 +129,12 @@ def test_low_speed_figures_meet_zimmermann(spacing):
                                                    rel=0.3 * (beta * spacing) ** 2)
 
 
-def test_low_speed_figures_meet_the_exact_static_beam_on_discrete_supports():
+@pytest.mark.parametrize("wheel", [None, rt.Wheel(600.0)])
+def test_low_speed_figures_meet_the_exact_static_beam_on_discrete_supports(wheel):
     track, solution = _static_case(0.6)
+    if wheel is not None:      # the wheel's own path: its cell, free rail and contact
+        solution = rt.solve(track, solution.train, rt.LinearFoundation(K2, 0.0), wheel=wheel)
+        assert solution.summary().dynamic_factor == pytest.approx(1.0, abs=1e-3)   # smooth rail
     span = track.sleeper_spacing
     sagging, hogging, seat = -np.inf, np.inf, -np.inf
     for load_at in np.arange(16) * span / 16:
