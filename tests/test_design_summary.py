@@ -255,3 +255,14 @@ def test_eisenmann_beyond_its_range_is_said_to_be_extrapolated():
     assert "extrapolated" in fast.eisenmann_basis and "extrapolated" not in slow.eisenmann_basis
     assert fast.eisenmann == pytest.approx(1 + 0.6 * (1 + (252 - 60) / 140))
     assert "Eisenmann" in repr(slow) and len(repr(fast).splitlines()) <= 15
+
+
+def test_dynamic_nonlinear_peaks_equal_the_sweeps_from_its_own_code_path():
+    # no closed form at 45 m/s on the bilinear law: the sweep's extremes (its batch's
+    # harmonics sampled by an inverse FFT in railtrack.studies.period_extremes) instead
+    law = rt.BilinearFoundation.paper(ratio=0.5)
+    swept = rt.sweep(rt.Track.paper(), rt.Train.paper(), law, speed=[45.0], stability="off")
+    summary = rt.solve(rt.Track.paper(), rt.Train.paper(speed=45.0), law,
+                       int(swept.harmonics)).summary()
+    assert summary.max_rail_seat_load == pytest.approx(swept.seat_load_peak[0], rel=1e-3)
+    assert summary.max_foundation_force == pytest.approx(swept.foundation_force_peak[0], rel=1e-3)
