@@ -2,23 +2,27 @@
 
 One function serves `railtrack.Solution` (a cell of one sleeper),
 `railtrack.CellSolution` and `railtrack.WheelSolution`; it reads them
-through the methods they share, so that it needs none of their modules.
+through their methods and fields, so that it imports none of their modules.
 
 Where the extremes are looked for:
 
 * rail-seat load and foundation force: every sleeper of the cell at ``n``
-  instants a period (a power of two, >= 1024 and >= 8 per period of the
-  highest harmonic), each peak refined by the parabola through its
-  neighbours;
+  instants a period (a power of two, >= 2048 and >= 4 per period of the
+  highest harmonic; a cell's by an inverse FFT of its harmonics), each
+  peak refined by the parabola through its neighbours;
 * sagging moment: under every wheel, with the wheel at `points_per_span`
   points of each span of the cell (16 by default), since the sagging peak
   of a span is a cusp under a wheel (`railtrack.equations.moment`) that a
   grid fixed in x and t would cut off; and on the grid below;
-* hogging moment: at `points_per_span` / 2 points a span (the sleepers
-  among them) at 8 instants for every span the train moves in a period
-  (>= 256), refined in time by a parabola.  Between point forces the static
+* hogging moment: at 4 points a span (the sleepers among them) at 8
+  instants for every span the train moves in a period (>= 128), refined in
+  time by a parabola; for a `WheelSolution`, whose free rail costs one
+  receptance per harmonic and point, at 2 points a span and 4 instants (a
+  30-sleeper cell with m = 1057: 6 s).  Between point forces the static
   moment of a beam is linear, so its hogging extreme sits at a sleeper,
-  where this grid has a point.
+  where this grid has a point.  At walking pace every figure is within
+  0.1 % of the exact static beam on discrete supports
+  (tests/test_design_summary.py).
 
 For the single-sleeper `Solution` the cell is one span: every sleeper is the
 observed one, delayed.
