@@ -34,6 +34,7 @@ PUBLIC = {
     "TimoshenkoRail", "p2_force", "EquivalentTrack", "equivalent_track",
     "PlausibilityWarning", "plausible_ranges", "plausibility",
 }
+PUBLIC |= {"RailSection", "UIC60", "UIC54", "DesignSummary", "eisenmann_factor"}   # issue 29
 
 
 def _modules():

@@ -71,6 +71,8 @@ from .model.track import Track
 from .model.train import Train
 from .model.plausibility import PlausibilityWarning, plausible_ranges
 from .model.plausibility_check import plausibility
+from .model.rail_section import RailSection, UIC54, UIC60
+from .solvers.design_summary import DesignSummary, eisenmann_factor
 
 
 def explore(**initial):
@@ -151,4 +153,9 @@ __all__ = [
     "PlausibilityWarning",
     "plausible_ranges",
     "plausibility",
+    "RailSection",
+    "UIC60",
+    "UIC54",
+    "DesignSummary",
+    "eisenmann_factor",
 ]

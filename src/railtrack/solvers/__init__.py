@@ -16,7 +16,9 @@ judged), and for a cell of N sleepers `cell_newton`,
 `result_protocol` (the questions every steady-state result answers, alike)
 and `result_repr` (their short reprs and HTML tables); `convergence` (the
 errors and warnings of a solve that fell short); `wheel_extremes` (a wheel
-solution's contact force over a period).
+solution's contact force over a period);
+`design_figures` and `design_summary` (the ``summary()`` of every result:
+seat load, ballast pressure, rail moment and stress, dynamic factor).
 
 Imports: `railtrack.model` and `railtrack.equations`.
 """

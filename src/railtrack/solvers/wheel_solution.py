@@ -305,3 +305,12 @@ class WheelSolution:
 
     def _repr_html_(self) -> str:
         return result_html(self)
+
+    def summary(self, **options):
+        """Design figures; max P / Q beside Eisenmann's factor in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
+
+        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
+        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
+        """
+        from .design_figures import design_summary
+        return design_summary(self, **options)
