@@ -220,6 +220,10 @@ def test_wheels_carry_their_static_loads_on_average(wheels):
     j = 15
     _close(dataset["sleeper_displacement"].sel(sleeper=j), wheels.sleeper_displacement(t)[j])
     _close(dataset["rail_seat_load"].sel(sleeper=j), wheels.rail_seat_load(t)[j])
+    x = j * TRACK.sleeper_spacing
+    _close(dataset["rail_bending_moment_at_sleeper"].sel(sleeper=j),
+           wheels.rail_bending_moment(t, x))
+    _close(dataset["rail_displacement_at_sleeper"].sel(sleeper=j), wheels.rail_displacement(t, x))
     # statics: each wheel presses with its axle load Q on average
     np.testing.assert_allclose(dataset["contact_force"].mean("time"), dataset["axle_load"],
                                rtol=1e-9)
@@ -317,3 +321,46 @@ def test_random_support_records_its_inputs_and_each_draw(draws):
     assert float(dataset["peak_seat_load"][1]) == pytest.approx(peak, rel=1e-3)
     table = draws.to_dataframe()
     assert list(table.columns[:2]) == ["draw", "factor[0]"]
+
+
+def test_a_ring_of_a_cell_and_with_wheels_exports_them(ring):
+    cell = rt.SleeperCell.identical(rt.Passage(TRACK, TRAIN), SOUND, 3).with_sleeper(
+        1, foundation=rt.LinearFoundation(10e6, 0.1e6))
+    of_cell = _quietly(rt.simulate_time_domain, TRACK, TRAIN, cell, elements_per_span=1,
+                       steps_per_period=120).to_xarray()
+    np.testing.assert_array_equal(of_cell["cell_foundation_stiffness"], [20e6, 10e6, 20e6])
+    assert of_cell.attrs["foundation_law"] == "SleeperCell"
+    # the ring's wheel outputs, mapped by name: (steps, J) becomes (wheel, time)
+    forces = np.outer(np.cos(2 * np.pi * ring.times / ring.times[-1]), [1.0, 2.0]) + 75e3
+    with_wheels = dataclasses.replace(ring, contact_forces=forces, wheel=rt.Wheel(600.0),
+                                      wheel_displacements=-forces * 1e-8,
+                                      rail_under_wheels=-forces * 2e-8).to_xarray()
+    np.testing.assert_array_equal(with_wheels["contact_force"].sel(wheel=1), forces[:, 1])
+    np.testing.assert_array_equal(with_wheels["rail_under_wheel"].sel(wheel=0),
+                                  -forces[:, 0] * 2e-8)
+    assert with_wheels.attrs["wheel_unsprung_mass"] == 600.0
+    assert set(with_wheels.dims) >= {"wheel", "time", "sleeper"}
+
+
+def test_folds_and_stability_changes_of_a_branch_round_trip(branch, tmp_path):
+    k = len(branch)
+    judged = dataclasses.replace(
+        branch, folds=(rt.Fold(50.0, 3),),
+        changes=(rt.StabilityChange(50.0, 3, "fold", 0.0, 0.0, False),),
+        stable=np.array([True] * 4 + [None] * (k - 4), dtype=object),
+        multipliers=np.r_[np.full(4, 0.5 + 0.1j), np.full(k - 4, np.nan)])
+    dataset = judged.to_xarray()
+    assert list(dataset["stability"].values[3:5]) == ["stable", "unknown"]
+    assert np.isnan(dataset["dominant_multiplier_imag"][4])
+    assert float(dataset["fold_value"][0]) == 50.0
+    assert dataset["fold_value"].attrs["units"] == "m s-1"
+    with xr.open_dataset(judged.to_netcdf(tmp_path / "judged.nc")) as back:
+        xr.testing.assert_identical(back.load(), dataset)
+    assert bool(back["change_gains"][0]) is False and str(back["change_kind"][0].values) == "fold"
+
+
+def test_bad_arguments_are_named(solution):
+    with pytest.raises(ValueError, match="samples"):
+        solution.to_xarray(samples=1)
+    with pytest.raises(ValueError, match="x .*1-D"):
+        solution.to_xarray(x=np.zeros((2, 2)))

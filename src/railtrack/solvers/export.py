@@ -98,8 +98,8 @@ def _attribute(value):
         return flag(value)
     if isinstance(value, str):
         return value
-    if isinstance(value, numbers.Integral):
-        return int(value)
+    if isinstance(value, numbers.Integral):     # netCDF-3 integers have 32 bits
+        return int(value) if -2**31 <= int(value) < 2**31 else str(int(value))
     if isinstance(value, numbers.Real):
         return float(value)
     array = np.asarray(value)
