@@ -155,8 +155,8 @@ def test_the_csv_read_back_is_the_table(request, tmp_path, case):
     table = result.to_dataframe(**options)
     back = pd.read_csv(result.to_csv(tmp_path / f"{case}.csv", **options))
     assert len(table) and list(back.columns) == list(table.columns)
-    pd.testing.assert_frame_equal(back, table, check_exact=False, rtol=1e-15,
-                                  check_dtype=False)
+    pd.testing.assert_frame_equal(back, table, check_exact=True,
+                                  check_dtype=True)
 
 
 def test_a_solution_is_its_own_methods_at_the_times_given(solution):
@@ -301,6 +301,7 @@ def test_a_branch_exports_each_point(branch):
         c = dataset["sleeper_displacement_coefficient_real"][i] + 1j * dataset[
             "sleeper_displacement_coefficient_imag"][i]
         np.testing.assert_array_equal(c, point.coefficients[branch.harmonics:])
+        assert float(dataset["truncation_error"][i]) == point.truncation_error
     assert dataset.attrs["parameter"] == "speed"
 
 

@@ -204,7 +204,7 @@ def _column(values: np.ndarray) -> np.ndarray:
 
 
 def write_csv(table: pd.DataFrame, path) -> Path:
-    """Write `table` as CSV (no index column; floats to full precision); its path."""
+    """Write `table` as CSV (no index column; floats written to round-trip exactly); its path."""
     path = Path(path)
-    table.to_csv(path, index=False, float_format="%.17g")
+    table.to_csv(path, index=False)
     return path

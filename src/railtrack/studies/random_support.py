@@ -141,8 +141,7 @@ class RandomSupport:
         return {"peak_seat_load": np.quantile(self.peak_seat_load[ok], q),
                 "peak_moment": np.quantile(self.peak_moment[ok], q)}
 
-
-    inputs: dict | None = None
+    inputs: dict | None = field(default=None, repr=False, compare=False)
     """The study's track, train, foundation, sleepers, draws, seed, harmonics and stability."""
 
     def to_xarray(self):

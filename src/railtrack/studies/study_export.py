@@ -97,6 +97,9 @@ def branch_dataset(branch, samples: int = 512) -> xr.Dataset:
         "converged": variable(row, np.asarray(branch.converged, dtype=bool), "1",
                               "whether the point reached its tolerance"),
         "residual": variable(row, branch.residuals, "1", "relative residual of eq. (17)"),
+        "truncation_error": variable(row, [branch.solution(i).truncation_error
+                                           for i in range(len(branch))], "1",
+                                     "estimated truncation error of the sleeper displacement"),
         "minimum_displacement": variable(row, branch.minimum_displacement(samples), "m",
                                          "lowest sleeper displacement over a period, "
                                          "positive upward"),
@@ -110,12 +113,16 @@ def branch_dataset(branch, samples: int = 512) -> xr.Dataset:
                               "one-sided Fourier coefficient c_n of the sleeper displacement"))
     unit = FIELD_UNITS.get(branch.parameter, "1")
     if branch.folds:
+        coords["fold"] = variable("fold", np.arange(len(branch.folds)), "1",
+                                  "index of the fold, in the order met")
         data["fold_value"] = variable("fold", [f.value for f in branch.folds], unit,
                                       f"{branch.parameter} at the fold")
         data["fold_index"] = variable("fold", [f.index for f in branch.folds], "1",
                                       "the fold lies between this point and the next")
     if branch.changes:
         changes = branch.changes
+        coords["change"] = variable("change", np.arange(len(changes)), "1",
+                                    "index of the change of stability, in the order met")
         data.update({
             "change_value": variable("change", [c.value for c in changes], unit,
                                      f"{branch.parameter} where stability changes"),

@@ -136,7 +136,6 @@ class Sweep:
             message=f"member {index} of a sweep: {state}, relative residual "
                     f"{self.residual[index]:.2e} after {self.iterations[index]} Newton steps")
 
-
     def to_xarray(self):
         """Every member as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""
         from .study_export import sweep_dataset
