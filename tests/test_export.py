@@ -365,3 +365,15 @@ def test_bad_arguments_are_named(solution):
         solution.to_xarray(samples=1)
     with pytest.raises(ValueError, match="x .*1-D"):
         solution.to_xarray(x=np.zeros((2, 2)))
+
+
+def test_a_law_given_as_a_function_is_recorded_by_name(tmp_path):
+    def ballast(w, v):
+        return 20e6 * w + 0.2e6 * v
+
+    solution = _quietly(rt.solve, TRACK, TRAIN, ballast, 10)
+    dataset = solution.to_xarray(samples=16)
+    assert (dataset.attrs["foundation_law"], dataset.attrs["foundation_law_law"]) == (
+        "CallableFoundation", "test_a_law_given_as_a_function_is_recorded_by_name.<locals>.ballast")
+    with xr.open_dataset(solution.to_netcdf(tmp_path / "f.nc", samples=16)) as back:
+        assert back.attrs["foundation_law_law"] == dataset.attrs["foundation_law_law"]

@@ -111,14 +111,18 @@ def _attribute(value):
 def law_attrs(prefix: str, law) -> dict:
     """``{prefix: class name, prefix_field: value}`` for a dataclass (a law, a wheel, a profile).
 
-    A law that is no dataclass (a callable) is recorded by its name and repr.
+    A function is recorded by its name, another object by its type and repr.
     """
-    attrs = {prefix: type(law).__name__}
     if not dataclasses.is_dataclass(law):
-        attrs[f"{prefix}_repr"] = repr(law)
-        return attrs
+        if hasattr(law, "__qualname__"):        # a function, e.g. a profile r(x)
+            return {prefix: law.__qualname__}
+        return {prefix: type(law).__name__, f"{prefix}_repr": repr(law)}
+    attrs = {prefix: type(law).__name__}
     for item in dataclasses.fields(law):
-        value = _attribute(getattr(law, item.name))
+        value = getattr(law, item.name)
+        if callable(value):          # a CallableFoundation's f(w, v): its name
+            value = getattr(value, "__qualname__", type(value).__name__)
+        value = _attribute(value)
         if value is not None:
             attrs[f"{prefix}_{item.name}"] = value
     return attrs

@@ -166,8 +166,8 @@ class Floquet:
         object.__setattr__(self, "stable", {"stable": True, "unstable": False}.get(self.verdict))
 
     def to_xarray(self):
-        """The multipliers as an `xarray.Dataset` (CF units; `railtrack.solvers.result_export`)."""
-        from .result_export import floquet_dataset
+        """The multipliers as an `xarray.Dataset` (CF units; `railtrack.solvers.floquet_export`)."""
+        from .floquet_export import floquet_dataset
         return floquet_dataset(self)
 
     def to_dataframe(self):

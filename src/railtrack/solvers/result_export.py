@@ -1,10 +1,27 @@
-"""The solvers' results as `xarray.Dataset`: Solution, CellSolution, WheelSolution, Floquet.
+"""The solvers' periodic results as `xarray.Dataset`: Solution, CellSolution, WheelSolution.
 
 The three periodic results share their names and dimensions (a `Solution`
-is the cell of one sleeper): histories over one period on
-``(sleeper, time)`` and, with wheels, ``(wheel, time)``; the Fourier
-coefficients on ``(sleeper, harmonic)``, split into real and imaginary
-parts.  The rules (units, long names, attributes) are
+is the cell of one sleeper, ``sleeper = 0``), sampled at ``samples``
+instants over one period, t = 0 when a wagon's first axle is above sleeper 0:
+
+* on ``(sleeper, time)``: sleeper_displacement [m], sleeper_velocity
+  [m s-1], rail_seat_load [N], foundation_force [N],
+  rail_displacement_at_sleeper [m], rail_bending_moment_at_sleeper [N m]
+  (not for the sleepers of a wheel solution's cell, whose rail field is the
+  wheel solution's);
+* on ``(sleeper, harmonic)``: sleeper_displacement_coefficient_real, _imag [m];
+* with ``x=`` positions [m]: rail_displacement [m] and rail_bending_moment
+  [N m] on ``(x, time)``;
+* a cell adds per sleeper its cell_sleeper_mass, cell_pad_stiffness,
+  cell_pad_damping, foundation_law and foundation_<field> (NaN where the
+  law has no such field), and contact_fraction [1];
+* a wheel solution adds on ``(wheel, time)`` contact_force [N],
+  compression, wheel_displacement, wheel_position [m]; lift [m] per wheel;
+  contact_force_harmonic_real, _imag [N] on ``(wheel, wheel_harmonic)``.
+
+Coordinates: time [s], sleeper and sleeper_position [m], harmonic and
+angular_frequency [rad s-1], wheel with axle_position [m] and axle_load
+[N].  The rules (units, long names, attributes) are
 `railtrack.solvers.export`'s.
 """
 
@@ -16,7 +33,7 @@ import xarray as xr
 from .export import (FIELD_UNITS, base_attrs, complex_parts, flag, input_attrs, time_grid,
                      variable)
 
-__all__ = ["solution_dataset", "cell_dataset", "wheel_dataset", "floquet_dataset"]
+__all__ = ["solution_dataset", "cell_dataset", "wheel_dataset"]
 
 SLEEPER_OUTPUTS = {
     "sleeper_displacement": ("m", "vertical displacement of the sleeper, positive upward"),
@@ -228,40 +245,4 @@ def wheel_dataset(solution, samples: int = 400, x=None) -> xr.Dataset:
     attrs.update(input_attrs(passage, wheel=solution.wheel, profile=solution.profile))
     for key in ("track_sleeper_mass", "track_pad_stiffness", "track_pad_damping"):
         attrs.pop(key, None)
-    return xr.Dataset(data, coords=coords, attrs=attrs)
-
-
-def floquet_dataset(result) -> xr.Dataset:
-    """A `railtrack.Floquet`: its multipliers, exponents, phases and what decides the verdict."""
-    dims = "multiplier"
-    data = complex_parts("multiplier", dims, result.multipliers, "1",
-                         "Floquet multiplier mu per period")
-    data["multiplier_modulus"] = variable(dims, np.abs(result.multipliers), "1",
-                                          "modulus of the Floquet multiplier")
-    data.update(complex_parts("exponent", dims, result.exponents, "s-1",
-                              "Floquet exponent lambda"))
-    data["phase"] = variable(dims, result.phases, "rad", "Bloch phase per sleeper")
-    data["tail"] = variable(dims, result.tail, "1", "share of the eigenvector on the top "
-                                                    "fifth of the harmonics")
-    data["resolved"] = variable(dims, np.asarray(result.resolved, dtype=bool), "1",
-                                "whether the truncation resolves the exponent")
-    coords = {"multiplier": variable(dims, np.arange(len(result.multipliers)), "1",
-                                     "index of the multiplier, by decreasing modulus"),
-              "base_phase": variable("base_phase", result.base_phases, "rad",
-                                     "Bloch phase asked for (each with its shifts)")}
-    vectors = result.vectors
-    if vectors is not None and np.size(vectors):
-        m = (vectors.shape[1] - 1) // 2
-        data.update(complex_parts("eigenvector", (dims, "harmonic"), vectors, "1",
-                                  "eigenvector on harmonics -m..m, unit norm"))
-        coords["harmonic"] = variable("harmonic", np.arange(-m, m + 1), "1",
-                                      "harmonic number n of the wagon-passing frequency")
-    attrs = base_attrs(
-        "Floquet", "Floquet multipliers of a periodic solution (railtrack)",
-        verdict=result.verdict, kind=result.kind, frequency=result.frequency,
-        theta=result.theta, most_unstable=result.most_unstable, period=result.period,
-        harmonics=result.harmonics, message=result.message, bound=result.bound,
-        continued=flag(result.continued), ceiling=result.ceiling,
-        dominant_multiplier_real=float(np.real(result.dominant)),
-        dominant_multiplier_imag=float(np.imag(result.dominant)))
     return xr.Dataset(data, coords=coords, attrs=attrs)

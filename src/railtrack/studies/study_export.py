@@ -5,8 +5,21 @@ of several along ``member`` with each field as a coordinate; a branch
 along ``point`` (its parameter may turn back at a fold, so it is a
 coordinate, not the index); a random-support study along ``draw``.  A
 member that did not converge keeps NaN where it has no value, and its
-stability reads "unknown", never "unstable".  Rules as
-`railtrack.solvers.export`.
+stability reads "unknown", never "unstable".
+
+* Sweep: converged, iterations, residual, truncation_error [1]; lowest,
+  highest [m]; seat_load_peak, seat_load_lowest, foundation_force_peak,
+  foundation_force_lowest [N]; stability (words) and
+  dominant_multiplier_real, _imag where judged; the coefficients on
+  ``(member, harmonic)``, n = -m..m [m].
+* Branch: converged, residual, truncation_error [1], minimum_displacement
+  [m], stability and dominant_multiplier_real, _imag once judged; the
+  one-sided coefficients, n = 0..m [m]; fold_value, fold_index on ``fold``;
+  change_value, _index, _kind, _frequency, _theta, _gains on ``change``.
+* RandomSupport: factor [1] on ``(draw, sleeper)``; peak_seat_load [N],
+  peak_moment [N m], converged, harmonics, stability per draw.
+
+Rules as `railtrack.solvers.export`.
 """
 
 from __future__ import annotations

@@ -3,8 +3,19 @@
 The ring's own grid of one period is kept (``time``, the integrator's
 steps): nothing is resampled.  Every ring sleeper is on ``sleeper``, the
 wheels (with ``wheel=``) on ``wheel``; what the ring gives at sleeper 0
-only (the rail there and at mid-span) is named so.  Rules as
-`railtrack.solvers.export`.
+only (the rail there and at mid-span) is named so.
+
+* on ``(sleeper, time)``: sleeper_displacement [m], rail_seat_load [N],
+  foundation_force [N], rail_bending_moment_at_sleeper and
+  rail_bending_moment_midspan [N m];
+* on ``time``: rail_displacement_at_sleeper_0, rail_displacement_midspan_0 [m];
+* with wheels, on ``(wheel, time)``: contact_force [N], wheel_displacement
+  and rail_under_wheel [m];
+* sleeper_0_history [m] on ``(period, time)``; period_change [1] on
+  ``period_step``;
+* a run on a `SleeperCell`: its laws and fields on ``cell_sleeper``.
+
+Rules as `railtrack.solvers.export`.
 """
 
 from __future__ import annotations
