@@ -28,6 +28,18 @@ so no further library is needed; ``xarray.open_dataset(path)`` reads them.
 CSV files hold ``to_dataframe()``: one row per instant of time (per member,
 point or draw of a study), a column per quantity and place, named
 ``quantity[index]`` (``sleeper_displacement[2]``: sleeper 2).
+
+Examples
+--------
+>>> import railtrack as rt
+>>> s = rt.solve(rt.Track.paper(), rt.Train.paper(), rt.LinearFoundation.paper())
+>>> ds = s.to_xarray(samples=64)
+>>> ds["rail_seat_load"].dims, ds["rail_seat_load"].attrs["units"]
+(('sleeper', 'time'), 'N')
+>>> round(float(ds["rail_seat_load"].mean()))        # sum Q L / H over the period
+5000
+>>> s.to_dataframe(samples=64).columns[:3].tolist()
+['time', 'sleeper_displacement[0]', 'sleeper_velocity[0]']
 """
 
 from __future__ import annotations
