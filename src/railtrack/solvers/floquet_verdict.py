@@ -173,6 +173,26 @@ class Floquet:
         from .result_repr import result_html
         return result_html(self)
 
+    def to_xarray(self):
+        """The multipliers as an `xarray.Dataset` (CF units; `railtrack.solvers.floquet_export`)."""
+        from .floquet_export import floquet_dataset
+        return floquet_dataset(self)
+
+    def to_dataframe(self):
+        """`to_xarray` as a `pandas.DataFrame`: one row per multiplier."""
+        from .export import frame
+        return frame(self.to_xarray(), "multiplier")
+
+    def to_netcdf(self, path):
+        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
+        from .export import write_netcdf
+        return write_netcdf(self.to_xarray(), path)
+
+    def to_csv(self, path):
+        """Write `to_dataframe` to a CSV file at `path`; the path."""
+        from .export import write_csv
+        return write_csv(self.to_dataframe(), path)
+
 
 def growth_bound(solution) -> float:
     """An estimate of the largest |mu| per period T = H / v any disturbance of `solution` can have [-].

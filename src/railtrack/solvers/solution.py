@@ -328,3 +328,27 @@ class Solution:
         """
         from .design_figures import design_summary
         return design_summary(self, **options)
+
+    def to_xarray(self, samples: int = 400, x=None):
+        """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).
+
+        Dimensions, variables and attributes: `railtrack.solvers.result_export`.
+        ``x`` [m] adds the rail's displacement and moment along x (dimension x).
+        """
+        from .result_export import solution_dataset
+        return solution_dataset(self, samples, x)
+
+    def to_dataframe(self, samples: int = 400, x=None):
+        """`to_xarray` as a `pandas.DataFrame`: a row per instant, a column per output and place."""
+        from .export import frame
+        return frame(self.to_xarray(samples, x), "time")
+
+    def to_netcdf(self, path, samples: int = 400, x=None):
+        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
+        from .export import write_netcdf
+        return write_netcdf(self.to_xarray(samples, x), path)
+
+    def to_csv(self, path, samples: int = 400, x=None):
+        """Write `to_dataframe` to a CSV file at `path`; the path."""
+        from .export import write_csv
+        return write_csv(self.to_dataframe(samples, x), path)

@@ -295,3 +295,26 @@ class Branch:
 
     def _repr_html_(self) -> str:
         return study_html(self)
+
+    def to_xarray(self, samples: int = 512):
+        """Every point as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`).
+
+        `samples` per period read each point's lowest sleeper displacement.
+        """
+        from .study_export import branch_dataset
+        return branch_dataset(self, samples)
+
+    def to_dataframe(self, samples: int = 512):
+        """`to_xarray` as a `pandas.DataFrame`: one row per point."""
+        from .study_export import study_frame
+        return study_frame(self.to_xarray(samples))
+
+    def to_netcdf(self, path, samples: int = 512):
+        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
+        from ..solvers.export import write_netcdf
+        return write_netcdf(self.to_xarray(samples), path)
+
+    def to_csv(self, path, samples: int = 512):
+        """Write `to_dataframe` to a CSV file at `path`; the path."""
+        from ..solvers.export import write_csv
+        return write_csv(self.to_dataframe(samples), path)

@@ -117,6 +117,8 @@ class RandomSupport:
     converged: np.ndarray
     harmonics: np.ndarray
     stability: np.ndarray = field(default_factory=lambda: np.empty(0, dtype="<U8"))
+    inputs: dict | None = field(default=None, repr=False, compare=False)
+    """The study's track, train, foundation, sleepers, draws, seed, harmonics and stability."""
 
     def stability_counts(self) -> dict[str, int]:
         """How many draws are "stable", "unstable" and "unknown"."""
@@ -147,6 +149,26 @@ class RandomSupport:
 
     def _repr_html_(self) -> str:
         return study_html(self)
+
+    def to_xarray(self):
+        """Every draw as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""
+        from .study_export import random_support_dataset
+        return random_support_dataset(self)
+
+    def to_dataframe(self):
+        """`to_xarray` as a `pandas.DataFrame`: one row per draw."""
+        from .study_export import study_frame
+        return study_frame(self.to_xarray())
+
+    def to_netcdf(self, path):
+        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
+        from ..solvers.export import write_netcdf
+        return write_netcdf(self.to_xarray(), path)
+
+    def to_csv(self, path):
+        """Write `to_dataframe` to a CSV file at `path`; the path."""
+        from ..solvers.export import write_csv
+        return write_csv(self.to_dataframe(), path)
 
 
 def _peaks(solution) -> tuple[float, float]:
@@ -246,7 +268,10 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
         values = tuple(np.concatenate([part[i] for part in parts]) for i in range(5))
     seat, moment, converged, used, verdicts = values
     result = RandomSupport(float(variation), factors, seat, moment, converged, used,
-                           verdicts.astype("<U8"))
+                           verdicts.astype("<U8"), inputs=dict(
+                               track=track, train=train, foundation=foundation,
+                               sleepers=sleepers, draws=draws, seed=seed,
+                               harmonics=harmonics, stability=stability))
     if np.any(verdicts == "unstable"):
         warnings.warn(UnstableSolutionWarning(
             f"{int(np.sum(verdicts == 'unstable'))} of {draws} draws are unstable periodic "

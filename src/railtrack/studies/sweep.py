@@ -143,6 +143,26 @@ class Sweep:
     def _repr_html_(self) -> str:
         return study_html(self)
 
+    def to_xarray(self):
+        """Every member as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""
+        from .study_export import sweep_dataset
+        return sweep_dataset(self)
+
+    def to_dataframe(self):
+        """`to_xarray` as a `pandas.DataFrame`: one row per member (one per swept value)."""
+        from .study_export import study_frame
+        return study_frame(self.to_xarray())
+
+    def to_netcdf(self, path):
+        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
+        from ..solvers.export import write_netcdf
+        return write_netcdf(self.to_xarray(), path)
+
+    def to_csv(self, path):
+        """Write `to_dataframe` to a CSV file at `path`; the path."""
+        from ..solvers.export import write_csv
+        return write_csv(self.to_dataframe(), path)
+
 
 def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto", *,
           accuracy: float | None = None, tol: float = 1e-10, max_iterations: int = 100,

@@ -148,3 +148,23 @@ class TimeDomainSolution:
 
     def _repr_html_(self) -> str:
         return time_domain_html(self)
+
+    def to_xarray(self):
+        """The last period as an `xarray.Dataset` (CF units; `railtrack.timedomain.td_export`)."""
+        from .td_export import time_domain_dataset
+        return time_domain_dataset(self)
+
+    def to_dataframe(self):
+        """`to_xarray` as a `pandas.DataFrame`: one row per time."""
+        from ..solvers.export import frame
+        return frame(self.to_xarray(), "time")
+
+    def to_netcdf(self, path):
+        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
+        from ..solvers.export import write_netcdf
+        return write_netcdf(self.to_xarray(), path)
+
+    def to_csv(self, path):
+        """Write `to_dataframe` to a CSV file at `path`; the path."""
+        from ..solvers.export import write_csv
+        return write_csv(self.to_dataframe(), path)
