@@ -38,6 +38,7 @@ from ..solvers.floquet import floquet
 from ..solvers.threads import blas_threads
 from ..solvers.solve import solve
 from .branch import Branch, StabilityChange, replaced
+from ..solvers.progress import PROGRESS_WORK, progress_bar, show_progress
 from .stability import check_stability
 
 __all__ = ["segments", "check_branch", "METHODS"]
@@ -47,6 +48,8 @@ FOLD_STEP = 0.02
 """Where a point just past a fold is solved, as a fraction of the way to the next point [-]."""
 VERDICT_POINTS = 16
 """Contour points per phase for the verdicts of `check_branch` (see `_floquet_branch`)."""
+PROGRESS_RUNS = 10
+"""Ring runs in the first sample from which ``method="time-domain"`` shows its progress."""
 
 
 
@@ -78,7 +81,7 @@ def _sample(segment: range, per_segment: int) -> list[int]:
 def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
                  resolution: float | None = None, per_segment: int | None = None,
                  locate: bool = True, confirm: int | None = None, max_checks: int | None = None,
-                 **options) -> Branch:
+                 progress: bool | None = None, **options) -> Branch:
     """The branch with the stability of every point, and where it changes.
 
     Parameters
@@ -110,6 +113,12 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
     max_checks : int
         Most `check_stability` runs in all (default 40); a ValueError if the sample needs
         more (before any run, if the first sample does).
+    progress : bool or None
+        A ``tqdm`` bar (`railtrack.solvers.progress`): of the points judged
+        by Hill's method, shown by default when points x (2m + 1)^2 reaches
+        `railtrack.solvers.progress.PROGRESS_WORK` (chapter 10's 173 points
+        at m = 25 stay below it); of the ring's runs, shown by default when
+        the first sample needs `PROGRESS_RUNS` or more.  True or False force it.
     **options
         Passed to `railtrack.floquet` (min_multiplier, ...) or to
         `railtrack.check_stability` (periods, tol, elements_per_span,
@@ -151,6 +160,7 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
                         f"{type(branch).__name__}" + (": judge one solution with "
                         "rt.floquet(solution) or rt.check_stability(solution)"
                         if hasattr(branch, "coefficients") else ""))
+    show_progress(progress, False)  # a TypeError before any work
     if method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}; got {method!r}")
     if not np.all(branch.converged):
@@ -163,7 +173,10 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
         if given or not locate:
             raise ValueError(f"{', '.join(given) or 'locate'} apply to method='time-domain' "
                              "only; Hill's method judges every point")
-        return _floquet_branch(branch, theta, resolution, **options)
+        shown = show_progress(progress, len(branch) * (2 * branch.harmonics + 1) ** 2
+                              >= PROGRESS_WORK)
+        with progress_bar(shown, len(branch), "check_branch", "points") as bar:
+            return _floquet_branch(branch, theta, resolution, bar, **options)
     per_segment = 2 if per_segment is None else per_segment
     max_checks = 40 if max_checks is None else max_checks
     if isinstance(per_segment, bool) or not isinstance(per_segment, (int, np.integer)) \
@@ -179,47 +192,50 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
                          f"need {needed} runs, more than max_checks = {max_checks}")
     checks: dict = {}
     confirmed: set = set()
+    shown = show_progress(progress, needed >= PROGRESS_RUNS)
 
     def run(i: int, **override) -> None:
         if len(checks) + len(confirmed) >= max_checks:
             raise ValueError(f"the sample needs more than max_checks = {max_checks} runs")
         checks[i] = check_stability(branch.solution(i), **{**options, **override})
+        bar.to(len(checks) + len(confirmed), f"point {i}: {checks[i].verdict}")
 
     stable = np.zeros(len(branch), dtype=bool)
-    for k, segment in enumerate(parts):
-        # the branch's own two ends are no folds: check them too
-        ends = ([segment[0]] if k == 0 else []) + ([segment[-1]] if k == len(parts) - 1 else [])
-        for i in sorted(set(_sample(segment, per_segment) + ends)):
-            run(i)
-        while locate:
-            known = sorted(i for i in checks if i in segment)
-            changes = [(a, b) for a, b in zip(known[:-1], known[1:])
-                       if checks[a].stable != checks[b].stable]
-            wide = [(a, b) for a, b in changes if b - a > 1]
-            doubtful = {i for pair in changes for i in pair
-                        if checks[i].stable and i not in confirmed} if confirm else set()
-            if not wide and not doubtful:
-                break
-            for a, b in wide:
-                run((a + b) // 2)
-            for i in sorted(doubtful) if not wide else ():
-                confirmed.add(i)
-                run(i, periods=confirm, max_periods=max(confirm, options.get("max_periods", 0)))
-        known = np.array(sorted(i for i in checks if i in segment))
-        for i in segment:
-            stable[i] = checks[int(known[np.argmin(np.abs(known - i))])].stable
+    with progress_bar(shown, None, "check_branch, the ring", "runs") as bar:
+        for k, segment in enumerate(parts):
+            # the branch's own two ends are no folds: check them too
+            ends = ([segment[0]] if k == 0 else []) + ([segment[-1]] if k == len(parts) - 1 else [])
+            for i in sorted(set(_sample(segment, per_segment) + ends)):
+                run(i)
+            while locate:
+                known = sorted(i for i in checks if i in segment)
+                changes = [(a, b) for a, b in zip(known[:-1], known[1:])
+                           if checks[a].stable != checks[b].stable]
+                wide = [(a, b) for a, b in changes if b - a > 1]
+                doubtful = {i for pair in changes for i in pair
+                            if checks[i].stable and i not in confirmed} if confirm else set()
+                if not wide and not doubtful:
+                    break
+                for a, b in wide:
+                    run((a + b) // 2)
+                for i in sorted(doubtful) if not wide else ():
+                    confirmed.add(i)
+                    run(i, periods=confirm, max_periods=max(confirm, options.get("max_periods", 0)))
+            known = np.array(sorted(i for i in checks if i in segment))
+            for i in segment:
+                stable[i] = checks[int(known[np.argmin(np.abs(known - i))])].stable
     return dataclasses.replace(branch, stable=stable.astype(object),
                                checks=dict(sorted(checks.items())))
 
 
-def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) -> Branch:
+def _floquet_branch(branch: Branch, theta, resolution: float | None, bar, **options) -> Branch:
     """`check_branch` by Hill's method: every point, then each change located."""
     with blas_threads(1):
         # The verdict needs only the dominant multiplier, which 16 contour points find
         # as 48 do at every point of chapter 10's fold branch (tests/test_floquet.py);
         # the full set of multipliers needs `floquet`'s default 24.
         options.setdefault("points", VERDICT_POINTS)
-        checks = _continued_checks(branch, theta, options)
+        checks = _continued_checks(branch, theta, options, bar)
         stable = np.array([checks[i].stable for i in range(len(branch))], dtype=object)
         verdicts = [checks[i].verdict for i in range(len(branch))]
         dominant = np.array([checks[i].dominant for i in range(len(branch))])
@@ -255,7 +271,7 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
                                    changes=tuple(changes))
 
 
-def _continued_checks(branch: Branch, theta, options) -> dict:
+def _continued_checks(branch: Branch, theta, options, bar) -> dict:
     """The `Floquet` of every point: searched in full, or continued from its neighbour.
 
     Each point's multipliers are continued by Newton from the previous
@@ -280,6 +296,7 @@ def _continued_checks(branch: Branch, theta, options) -> dict:
         continuable = previous is not None and previous.vectors is not None
         checks[i] = floquet(branch.solution(i), theta, guess=previous, **options) \
             if continuable else full(i)
+        bar.to(i + 1)
         if i == 0 or checks[i].verdict == checks[i - 1].verdict:
             continue
         # a continued "unstable" is proved (a multiplier found outside); the others rest

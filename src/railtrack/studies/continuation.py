@@ -36,6 +36,7 @@ from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..solvers.solution import ConvergenceWarning, TruncationWarning
 from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION, solve
+from ..solvers.progress import PROGRESS_WORK, progress_bar, show_progress
 from ..solvers.threads import blas_threads
 from ..solvers.truncation import (MAX_AUTO_HARMONICS, TAIL_FACTOR, estimate_of,
                                   grown_harmonics, predict_harmonics, track_spectrum)
@@ -92,7 +93,8 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
                  harmonics: int | str = "auto", step: float | None = None, max_points: int = 400,
                  tol: float = 1e-10, *, accuracy: float | None = None,
                  min_step: float | None = None, max_step: float | None = None,
-                 samples: int | None = None, initial=None, max_corrector: int = 8) -> Branch:
+                 samples: int | None = None, initial=None, max_corrector: int = 8,
+                 progress: bool | None = None) -> Branch:
     """Follow the periodic solution of eq. (17) from ``parameter = start`` to `stop`.
 
     Parameters
@@ -134,6 +136,11 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
         Starting c_0..c_m for the first solve; needs an explicit m.
     max_corrector : int
         Newton steps allowed to each corrector.
+    progress : bool or None
+        A ``tqdm`` counter of the points traced, with the parameter reached
+        (`railtrack.solvers.progress`): None shows it when `max_points` x
+        (2m + 1)^2 reaches `railtrack.solvers.progress.PROGRESS_WORK`
+        (400 points at m = 50), True or False force it.
 
     Returns
     -------
@@ -191,8 +198,9 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
             raise ValueError(f"need 0 < min_step <= step <= max_step and step <= |stop - start| for "
                              f"{parameter!r}; got {bounds[0]!r}, {step!r}, {bounds[1]!r}")
 
+        show_progress(progress, False)  # a TypeError now, not after the first solve
         settings = (track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
-                    max_corrector)
+                    max_corrector, progress)
         if not automatic:
             branch, worst = _trace(*settings, harmonics, samples, initial)
             if worst[0] > WARN_TRUNCATION:
@@ -250,8 +258,19 @@ def _estimates(problem, points) -> tuple[float, float, int]:
 
 
 def _trace(track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
-           max_corrector, harmonics, samples, initial):
-    """The branch at m = `harmonics`, and `_estimates` of its points."""
+           max_corrector, progress, harmonics, samples, initial):
+    """The branch at m = `harmonics`, and `_estimates` of its points (a bar if `progress`)."""
+    shown = show_progress(progress, max_points * (2 * harmonics + 1) ** 2 >= PROGRESS_WORK)
+    with progress_bar(shown, None, f"continuation in {parameter}, m = {harmonics}", "points") as bar:
+        traced = _traced(track, train, foundation, parameter, start, stop, step, bounds,
+                         max_points, tol, max_corrector, harmonics, samples, initial, bar)
+        bar.to(len(traced[0]), f"{parameter} = {traced[0].values[-1]:.6g}")
+        return traced
+
+
+def _traced(track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
+            max_corrector, harmonics, samples, initial, bar):
+    """`_trace`'s work, `bar` moved at every point."""
     span = abs(stop - start)
     with warnings.catch_warnings():
         # the branch warns for itself (`_warned`, and the caller's truncation check)
@@ -279,6 +298,7 @@ def _trace(track, train, foundation, parameter, start, stop, step, bounds, max_p
     tangents = [tangent]
     ds, (low, high) = step / span, (b / span for b in bounds)
     while len(points) < max_points:
+        bar.to(len(points), f"{parameter} = {u[-1] * span:.6g}")
         point = _correct(problem, u + ds * tangent, tangent, tol, max_corrector)
         new_tangent = None if point is None else _tangent(problem.jacobian(point[0]), tangent)
         if point is None or new_tangent @ tangent < MIN_COSINE:
