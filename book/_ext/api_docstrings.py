@@ -7,11 +7,19 @@ Before napoleon turns the numpydoc sections into reStructuredText, this
 extension escapes each ``|`` outside the docstring's literal parts
 (doctest blocks, ``::`` blocks, text in backquotes), so that the page shows what the source
 says and the build stays free of warnings.
+
+Autosummary's table gives each name the first sentence of its docstring,
+and takes "eq." for the end of one ("Linear viscoelastic foundation
+f = k2 w + eta2 w', eq."): the extension adds the book's abbreviations to
+the few autosummary knows ("e.g.", "i.e.", "et al.").
 """
 
 from __future__ import annotations
 
 import re
+
+ABBREVIATIONS = ("eq.", "eqs.", "Eq.", "Eqs.", "Fig.", "Sec.", "cf.", "approx.")
+"""Abbreviations that do not end a docstring's first sentence."""
 
 _PIPE = re.compile(r"(?<!\\)\|")
 # inline literals and interpreted text, where a backslash would be shown as it is
@@ -48,6 +56,11 @@ def _process(app, what, name, obj, options, lines) -> None:
 
 
 def setup(app):
+    from sphinx.ext import autosummary
+
+    # read by autosummary's extract_summary at each call
+    autosummary.WELL_KNOWN_ABBREVIATIONS = (*autosummary.WELL_KNOWN_ABBREVIATIONS,
+                                            *ABBREVIATIONS)
     # before napoleon (priority 500): its output has no "|" of its own
     app.connect("autodoc-process-docstring", _process, priority=400)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
