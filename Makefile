@@ -1,5 +1,7 @@
 # Build, test and benchmark the railtrack book and package.
 #
+#   make venv    only the environment: .venv (the pins of environment.txt, railtrack
+#                editable) and MathJax in book/_static; every other target makes it first
 #   make book    build the HTML book (every notebook re-executed) into _build/html
 #   make test    ruff on the notebooks, pytest over tests/ and nbval over every notebook
 #                under book/ (on every core), then the
@@ -57,6 +59,7 @@ unexport VIRTUAL_ENV PYTHONPATH PYTHONHOME
 .PHONY: help venv book book-student pdf lab test test-roundoff bench clean distclean
 
 help:
+	@echo "make venv   - only the environment: .venv with the pins of environment.txt, railtrack editable"
 	@echo "make book   - build the HTML book into _build/html (re-executes every notebook)"
 	@echo "make test   - pytest over tests/, nbval over book/**/*.ipynb, the rendered book's checks"
 	@echo "make book-student - the book without solutions, into _build/student"

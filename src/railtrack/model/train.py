@@ -172,7 +172,7 @@ class Train:
 
     @property
     def wheel_spacing(self) -> float:
-        """D of the paper: the distance between the two axles of a two-axle wagon [m]."""
+        """The distance D of the paper between the two axles of a two-axle wagon [m]."""
         if self.axle_count != 2:
             raise AttributeError(f"wheel_spacing (D) is defined for a two-axle wagon; "
                                  f"this one has {self.axle_count} axles (see axle_positions)")
@@ -180,7 +180,7 @@ class Train:
 
     @property
     def wheel_load(self) -> float:
-        """Q of the paper: the load of every wheel, when all wheels carry the same [N]."""
+        """The load Q of the paper on every wheel, when all wheels carry the same [N]."""
         if len(set(self.axle_loads)) != 1:
             raise AttributeError(f"wheel_load (Q) needs equal axle loads; got {self.axle_loads}")
         return self.axle_loads[0]

@@ -14,7 +14,8 @@ change is listed on the branch (`railtrack.studies.branch.StabilityChange`)
 with its kind: a fold, a real multiplier through +1 away from a fold,
 through -1 (period doubling), or a complex pair (Neimark–Sacker).
 
-``method="time-domain"`` keeps the older check: the time-domain ring
+``method="time-domain"`` keeps the older check
+(`railtrack.studies.branch_ring`): the time-domain ring
 (`railtrack.check_stability`) on a sample of the points.  At a fold one
 multiplier passes +1, so stability changes there as a rule, and the
 sample is split at the folds: every segment between folds is checked at a
@@ -38,7 +39,8 @@ from ..solvers.floquet import floquet
 from ..solvers.threads import blas_threads
 from ..solvers.solve import solve
 from .branch import Branch, StabilityChange, replaced
-from .stability import check_stability
+from ..solvers.progress import PROGRESS_WORK, progress_bar, show_progress
+from .branch_ring import ring_branch, segments
 
 __all__ = ["segments", "check_branch", "METHODS"]
 
@@ -49,36 +51,10 @@ VERDICT_POINTS = 16
 """Contour points per phase for the verdicts of `check_branch` (see `_floquet_branch`)."""
 
 
-
-def segments(branch: Branch) -> list[range]:
-    """Index ranges of the branch between its folds, in order.
-
-    Fold ``k`` lies between points ``index`` and ``index + 1``, so a branch
-    with F folds has F + 1 segments.
-
-    >>> import numpy as np
-    >>> from railtrack.studies.branch import Fold
-    >>> class Fake:
-    ...     values, folds = np.arange(10.0), (Fold(3.5, 3), Fold(6.5, 6))
-    >>> [list(s) for s in segments(Fake())]
-    [[0, 1, 2, 3], [4, 5, 6], [7, 8, 9]]
-    """
-    cuts = [0] + [fold.index + 1 for fold in branch.folds] + [len(branch.values)]
-    return [range(a, b) for a, b in zip(cuts[:-1], cuts[1:]) if b > a]
-
-
-def _sample(segment: range, per_segment: int) -> list[int]:
-    """`per_segment` indices spread over the segment, away from its ends (near a fold the
-    deciding multiplier is close to 1 and the ring needs many periods to tell)."""
-    n = len(segment)
-    picks = {segment[int(round((q + 1) * (n - 1) / (per_segment + 1)))] for q in range(per_segment)}
-    return sorted(picks)
-
-
 def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
                  resolution: float | None = None, per_segment: int | None = None,
                  locate: bool = True, confirm: int | None = None, max_checks: int | None = None,
-                 **options) -> Branch:
+                 progress: bool | None = None, **options) -> Branch:
     """The branch with the stability of every point, and where it changes.
 
     Parameters
@@ -110,6 +86,13 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
     max_checks : int
         Most `check_stability` runs in all (default 40); a ValueError if the sample needs
         more (before any run, if the first sample does).
+    progress : bool or None
+        A ``tqdm`` bar (`railtrack.solvers.progress`): of the points judged
+        by Hill's method, shown by default when points x (2m + 1)^2 reaches
+        `railtrack.solvers.progress.PROGRESS_WORK` (chapter 10's 173 points
+        at m = 25 stay below it); of the ring's runs, shown by default when
+        the first sample needs `railtrack.studies.branch_ring.PROGRESS_RUNS` or more.
+        True or False force it.
     **options
         Passed to `railtrack.floquet` (min_multiplier, ...) or to
         `railtrack.check_stability` (periods, tol, elements_per_span,
@@ -151,6 +134,7 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
                         f"{type(branch).__name__}" + (": judge one solution with "
                         "rt.floquet(solution) or rt.check_stability(solution)"
                         if hasattr(branch, "coefficients") else ""))
+    show_progress(progress, False)  # a TypeError before any work
     if method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}; got {method!r}")
     if not np.all(branch.converged):
@@ -163,63 +147,21 @@ def check_branch(branch: Branch, method: str = "floquet", *, theta=None,
         if given or not locate:
             raise ValueError(f"{', '.join(given) or 'locate'} apply to method='time-domain' "
                              "only; Hill's method judges every point")
-        return _floquet_branch(branch, theta, resolution, **options)
-    per_segment = 2 if per_segment is None else per_segment
-    max_checks = 40 if max_checks is None else max_checks
-    if isinstance(per_segment, bool) or not isinstance(per_segment, (int, np.integer)) \
-            or per_segment < 1:
-        raise ValueError(f"per_segment must be an integer >= 1; got {per_segment!r}")
-    whole = not isinstance(confirm, bool) and isinstance(confirm, (int, np.integer))
-    if confirm is not None and not (whole and confirm >= 2):
-        raise ValueError(f"confirm must be None or an integer >= 2 (periods); got {confirm!r}")
-    parts = segments(branch)
-    needed = len(parts) * per_segment + 2
-    if needed > max_checks:
-        raise ValueError(f"{len(parts)} segments x per_segment = {per_segment} and the two ends "
-                         f"need {needed} runs, more than max_checks = {max_checks}")
-    checks: dict = {}
-    confirmed: set = set()
-
-    def run(i: int, **override) -> None:
-        if len(checks) + len(confirmed) >= max_checks:
-            raise ValueError(f"the sample needs more than max_checks = {max_checks} runs")
-        checks[i] = check_stability(branch.solution(i), **{**options, **override})
-
-    stable = np.zeros(len(branch), dtype=bool)
-    for k, segment in enumerate(parts):
-        # the branch's own two ends are no folds: check them too
-        ends = ([segment[0]] if k == 0 else []) + ([segment[-1]] if k == len(parts) - 1 else [])
-        for i in sorted(set(_sample(segment, per_segment) + ends)):
-            run(i)
-        while locate:
-            known = sorted(i for i in checks if i in segment)
-            changes = [(a, b) for a, b in zip(known[:-1], known[1:])
-                       if checks[a].stable != checks[b].stable]
-            wide = [(a, b) for a, b in changes if b - a > 1]
-            doubtful = {i for pair in changes for i in pair
-                        if checks[i].stable and i not in confirmed} if confirm else set()
-            if not wide and not doubtful:
-                break
-            for a, b in wide:
-                run((a + b) // 2)
-            for i in sorted(doubtful) if not wide else ():
-                confirmed.add(i)
-                run(i, periods=confirm, max_periods=max(confirm, options.get("max_periods", 0)))
-        known = np.array(sorted(i for i in checks if i in segment))
-        for i in segment:
-            stable[i] = checks[int(known[np.argmin(np.abs(known - i))])].stable
-    return dataclasses.replace(branch, stable=stable.astype(object),
-                               checks=dict(sorted(checks.items())))
+        shown = show_progress(progress, len(branch) * (2 * branch.harmonics + 1) ** 2
+                              >= PROGRESS_WORK)
+        with progress_bar(shown, len(branch), "check_branch", "points") as bar:
+            return _floquet_branch(branch, theta, resolution, bar, **options)
+    return ring_branch(branch, per_segment, locate, confirm, max_checks, progress, options)
 
 
-def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) -> Branch:
+def _floquet_branch(branch: Branch, theta, resolution: float | None, bar, **options) -> Branch:
     """`check_branch` by Hill's method: every point, then each change located."""
     with blas_threads(1):
         # The verdict needs only the dominant multiplier, which 16 contour points find
         # as 48 do at every point of chapter 10's fold branch (tests/test_floquet.py);
         # the full set of multipliers needs `floquet`'s default 24.
         options.setdefault("points", VERDICT_POINTS)
-        checks = _continued_checks(branch, theta, options)
+        checks = _continued_checks(branch, theta, options, bar)
         stable = np.array([checks[i].stable for i in range(len(branch))], dtype=object)
         verdicts = [checks[i].verdict for i in range(len(branch))]
         dominant = np.array([checks[i].dominant for i in range(len(branch))])
@@ -255,7 +197,7 @@ def _floquet_branch(branch: Branch, theta, resolution: float | None, **options) 
                                    changes=tuple(changes))
 
 
-def _continued_checks(branch: Branch, theta, options) -> dict:
+def _continued_checks(branch: Branch, theta, options, bar) -> dict:
     """The `Floquet` of every point: searched in full, or continued from its neighbour.
 
     Each point's multipliers are continued by Newton from the previous
@@ -280,6 +222,7 @@ def _continued_checks(branch: Branch, theta, options) -> dict:
         continuable = previous is not None and previous.vectors is not None
         checks[i] = floquet(branch.solution(i), theta, guess=previous, **options) \
             if continuable else full(i)
+        bar.to(i + 1)
         if i == 0 or checks[i].verdict == checks[i - 1].verdict:
             continue
         # a continued "unstable" is proved (a multiplier found outside); the others rest

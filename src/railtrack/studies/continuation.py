@@ -30,15 +30,16 @@ from ..solvers.arguments import require_count, require_fraction
 from ..solvers.arclength import ArclengthProblem, correct as _correct, tangent_of as _tangent
 from .branch import (TRACK_FIELDS, TRAIN_FIELDS, Branch, Fold, check_parameter,
                      hermite_turning_value, replaced, scalar)
-from ..equations.harmonic_balance import from_real, harmonic_system, to_real
-from ..solvers.newton import iterate_newton
+from .continuation_steps import (branch_of as _branch, estimates as _estimates, fold as _fold,
+                                 land as _land)
+from ..equations.harmonic_balance import harmonic_system, to_real
 from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..solvers.solution import ConvergenceWarning, TruncationWarning
 from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION, solve
+from ..solvers.progress import PROGRESS_WORK, progress_bar, show_progress
 from ..solvers.threads import blas_threads
-from ..solvers.truncation import (MAX_AUTO_HARMONICS, TAIL_FACTOR, estimate_of,
-                                  grown_harmonics, predict_harmonics, track_spectrum)
+from ..solvers.truncation import MAX_AUTO_HARMONICS, predict_harmonics
 
 __all__ = ["continuation", "Branch", "Fold"]
 
@@ -61,38 +62,12 @@ class _Problem(ArclengthProblem):
         return harmonic_system(Passage(track, train), foundation, self.harmonics, self.samples)
 
 
-def _fold(problem, u, tangent, ds, slope, tol, max_steps):
-    """Parameter at the turning point between u and the next point, ``ds`` ahead along `tangent`.
-
-    dp/ds is `tangent[-1]` at u and `slope` at the next point, of opposite
-    signs; the Illinois variant of regula falsi on the step length finds
-    the corrected point where dp/ds = 0.  None if a corrector fails.
-    """
-    lo, hi, f_lo, f_hi = 0.0, ds, tangent[-1], slope
-    found, side = None, 0
-    for _ in range(40):
-        trial = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
-        point = _correct(problem, u + trial * tangent, tangent, tol, max_steps)
-        if point is None:
-            return None
-        f = _tangent(problem.jacobian(point[0]), tangent)[-1]
-        found = point[0][-1] * problem.p_scale
-        if abs(f) < 1e-10 or hi - lo < 1e-12 * ds:
-            break
-        if np.sign(f) == np.sign(f_hi):
-            hi, f_hi = trial, f
-            f_lo, side = (f_lo / 2, side) if side == 1 else (f_lo, 1)
-        else:
-            lo, f_lo = trial, f
-            f_hi, side = (f_hi / 2, side) if side == -1 else (f_hi, -1)
-    return found
-
-
 def continuation(track, train, foundation, parameter: str = "speed", start=None, stop=None,
                  harmonics: int | str = "auto", step: float | None = None, max_points: int = 400,
                  tol: float = 1e-10, *, accuracy: float | None = None,
                  min_step: float | None = None, max_step: float | None = None,
-                 samples: int | None = None, initial=None, max_corrector: int = 8) -> Branch:
+                 samples: int | None = None, initial=None, max_corrector: int = 8,
+                 progress: bool | None = None) -> Branch:
     """Follow the periodic solution of eq. (17) from ``parameter = start`` to `stop`.
 
     Parameters
@@ -134,6 +109,11 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
         Starting c_0..c_m for the first solve; needs an explicit m.
     max_corrector : int
         Newton steps allowed to each corrector.
+    progress : bool or None
+        A ``tqdm`` counter of the points traced, with the parameter reached
+        (`railtrack.solvers.progress`): None shows it when `max_points` x
+        (2m + 1)^2 reaches `railtrack.solvers.progress.PROGRESS_WORK`
+        (400 points at m = 50), True or False force it.
 
     Returns
     -------
@@ -191,8 +171,9 @@ def continuation(track, train, foundation, parameter: str = "speed", start=None,
             raise ValueError(f"need 0 < min_step <= step <= max_step and step <= |stop - start| for "
                              f"{parameter!r}; got {bounds[0]!r}, {step!r}, {bounds[1]!r}")
 
+        show_progress(progress, False)  # a TypeError now, not after the first solve
         settings = (track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
-                    max_corrector)
+                    max_corrector, progress)
         if not automatic:
             branch, worst = _trace(*settings, harmonics, samples, initial)
             if worst[0] > WARN_TRUNCATION:
@@ -236,22 +217,20 @@ def _warned(branch: Branch) -> Branch:
     return branch
 
 
-def _estimates(problem, points) -> tuple[float, float, int]:
-    """(worst estimated truncation error, its parameter value, the m it needs) over the points."""
-    worst = (0.0, float(points[0][3]), problem.harmonics)
-    for u, _residual, _steps, value in points:
-        system = problem.system(value)
-        c = problem.split(u)[0]
-        estimate, tail = estimate_of(system, c, track_spectrum(system.passage,
-                                                               TAIL_FACTOR * problem.harmonics))
-        if tail is not None and estimate > worst[0]:
-            worst = (estimate, float(value), grown_harmonics(c, tail, 0.8 * DEFAULT_ACCURACY))
-    return worst
-
-
 def _trace(track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
-           max_corrector, harmonics, samples, initial):
-    """The branch at m = `harmonics`, and `_estimates` of its points."""
+           max_corrector, progress, harmonics, samples, initial):
+    """The branch at m = `harmonics`, and `_estimates` of its points (a bar if `progress`)."""
+    shown = show_progress(progress, max_points * (2 * harmonics + 1) ** 2 >= PROGRESS_WORK)
+    with progress_bar(shown, None, f"continuation in {parameter}, m = {harmonics}", "points") as bar:
+        traced = _traced(track, train, foundation, parameter, start, stop, step, bounds,
+                         max_points, tol, max_corrector, harmonics, samples, initial, bar)
+        bar.to(len(traced[0]), f"{parameter} = {traced[0].values[-1]:.6g}")
+        return traced
+
+
+def _traced(track, train, foundation, parameter, start, stop, step, bounds, max_points, tol,
+            max_corrector, harmonics, samples, initial, bar):
+    """`_trace`'s work, `bar` moved at every point."""
     span = abs(stop - start)
     with warnings.catch_warnings():
         # the branch warns for itself (`_warned`, and the caller's truncation check)
@@ -279,6 +258,7 @@ def _trace(track, train, foundation, parameter, start, stop, step, bounds, max_p
     tangents = [tangent]
     ds, (low, high) = step / span, (b / span for b in bounds)
     while len(points) < max_points:
+        bar.to(len(points), f"{parameter} = {u[-1] * span:.6g}")
         point = _correct(problem, u + ds * tangent, tangent, tol, max_corrector)
         new_tangent = None if point is None else _tangent(problem.jacobian(point[0]), tangent)
         if point is None or new_tangent @ tangent < MIN_COSINE:
@@ -325,28 +305,3 @@ def _trace(track, train, foundation, parameter, start, stop, step, bounds, max_p
         message = f"stopped after max_points = {max_points} points at {parameter} = {u[-1] * span:.6g}"
     message += f"; {len(folds)} fold(s)"
     return _branch(problem, points, tangents, folds, message, tol), _estimates(problem, points)
-
-
-def _land(problem, before, after, value, tol):
-    """Solve at p = value from c interpolated between the points on either side of it."""
-    weight = (value / problem.p_scale - before[-1]) / (after[-1] - before[-1])
-    x = (1 - weight) * before[:-1] + weight * after[:-1]
-    system = problem.system(value)
-    outcome = iterate_newton(system, 50, tol, initial=from_real(x * problem.x_scale))
-    if not outcome.converged:
-        return None
-    return (np.append(to_real(outcome.coefficients) / problem.x_scale, value / problem.p_scale),
-            float(outcome.residual_history[-1]), outcome.iterations, value)
-
-
-def _branch(problem, points, tangents, folds, message, tol):
-    track, train, foundation, parameter = problem.parts
-    residuals = np.array([point[1] for point in points])
-    return Branch(
-        parameter=parameter, values=np.array([point[3] for point in points]),
-        coefficients=np.array([problem.split(point[0])[0] for point in points]),
-        tangents=np.array(tangents), converged=residuals <= tol, residuals=residuals,
-        folds=tuple(folds), message=message, track=track, train=train, foundation=foundation,
-        harmonics=problem.harmonics, samples=problem.samples,
-        coefficient_scale=problem.x_scale, parameter_scale=problem.p_scale,
-    )

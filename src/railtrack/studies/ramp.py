@@ -26,7 +26,11 @@ import numpy as np
 
 from ..timedomain.spectrum import record_spectrum
 from ..solvers.solution import ConvergenceWarning
+from ..timedomain.fem import sleepers_on_ring
+from ..timedomain.runcost import LONG_RUN_SECONDS, TYPICAL_PERIODS, estimate_run_cost
 from ..timedomain.simulation import simulate_time_domain
+from ..model.passage import Passage
+from ..solvers.progress import progress_bar, show_progress
 from ..model.track import Track
 from ..model.train import Train
 from ..solvers.threads import blas_threads
@@ -78,7 +82,8 @@ def _interharmonic(result) -> float:
 
 def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span: int = 8,
                steps_per_period: int = 2400, *, tol: float = 1e-6, max_periods: int = 100,
-               start="static", warn_step_error: float | None = None) -> SpeedRamp:
+               start="static", warn_step_error: float | None = None,
+               progress: bool | None = None) -> SpeedRamp:
     """Steady response of the ring at each speed, each run started from the previous one.
 
     Parameters
@@ -94,6 +99,11 @@ def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span
         Start of the first speed.  Each later speed starts from the previous
         one's end state, its velocities scaled by the ratio of the speeds
         (see the module docstring).
+    progress : bool or None
+        A ``tqdm`` bar counting the speeds (`railtrack.solvers.progress`):
+        None shows it when the ring's estimated time for a typical run
+        (`railtrack.timedomain.runcost`) times the number of speeds passes
+        a minute, True or False force it.
 
     Returns
     -------
@@ -110,21 +120,17 @@ def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span
         speeds = np.asarray(speeds, dtype=float).ravel()
         if speeds.size == 0 or not np.all(np.isfinite(speeds) & (speeds > 0)):
             raise ValueError(f"speeds must be a non-empty sequence of finite speeds > 0; got {speeds!r}")
-        results = []
-        state, previous = start, None
-        for speed in speeds:
-            if previous is not None:
-                u, v = state
-                state = (u, v * (speed / previous))
-            with warnings.catch_warnings():
-                # SpeedRamp.converged reports each speed; a warning per speed would repeat it
-                warnings.simplefilter("ignore", ConvergenceWarning)
-                result = simulate_time_domain(track, train.replace(speed=float(speed)), foundation,
-                                              elements_per_span, steps_per_period, tol=tol,
-                                              max_periods=max_periods, start=state,
-                                              warn_step_error=warn_step_error)
-            results.append(result)
-            state, previous = result.final_state, speed
+        try:
+            cost = estimate_run_cost(sleepers_on_ring(Passage(track, train)), elements_per_span,
+                                     steps_per_period).seconds(min(TYPICAL_PERIODS, max_periods))
+        except (TypeError, ValueError):
+            cost = 0.0  # the first run refuses the arguments with its own message
+        shown = show_progress(progress, speeds.size * cost > LONG_RUN_SECONDS)
+        with progress_bar(shown, speeds.size, "speed_ramp", "speeds") as bar:
+            results = _ramp(track, train, foundation, speeds, start, bar,
+                            dict(elements_per_span=elements_per_span,
+                                 steps_per_period=steps_per_period, tol=tol,
+                                 max_periods=max_periods, warn_step_error=warn_step_error))
         return SpeedRamp(
             speeds=speeds,
             minimum=np.array([float(r.sleeper_displacements.min()) for r in results]),
@@ -132,5 +138,23 @@ def speed_ramp(track: Track, train: Train, foundation, speeds, elements_per_span
             converged=np.array([r.converged for r in results]),
             periods=np.array([r.periods for r in results]),
             interharmonic_fraction=np.array([_interharmonic(r) for r in results]),
-            final_state=state,
+            final_state=results[-1].final_state,
         )
+
+
+def _ramp(track, train, foundation, speeds, state, bar, run) -> list:
+    """The ring at each speed from the previous one's end state; `bar` counts the speeds."""
+    results, previous = [], None
+    for count, speed in enumerate(speeds, 1):
+        if previous is not None:
+            u, v = state
+            state = (u, v * (speed / previous))
+        with warnings.catch_warnings():
+            # SpeedRamp.converged reports each speed; a warning per speed would repeat it
+            warnings.simplefilter("ignore", ConvergenceWarning)
+            result = simulate_time_domain(track, train.replace(speed=float(speed)), foundation,
+                                          start=state, progress=False, **run)
+        results.append(result)
+        state, previous = result.final_state, speed
+        bar.to(count, f"{speed:g} m/s")
+    return results

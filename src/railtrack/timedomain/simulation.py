@@ -47,12 +47,13 @@ from .ring_state import initial_state
 from ..model.cell import SleeperCell
 from ..model.foundations import as_foundation
 from .newmark import NewmarkStepper, NonFiniteLawError, instability_hint, reference_law
-from .runcost import LongRunWarning, check_run_cost
+from .runcost import LONG_RUN_SECONDS, TYPICAL_PERIODS, LongRunWarning, check_run_cost
 from .timestep import TimeStepWarning, check_step_error, check_steps_per_period
 from ..model.passage import Passage
 from .td_solution import TimeDomainSolution
 from ..model.track import Track
 from ..model.train import Train
+from ..solvers.progress import progress_bar, show_progress
 from ..solvers.solution import ConvergenceWarning
 from ..solvers.threads import blas_threads
 
@@ -109,6 +110,7 @@ def simulate_time_domain(
     profile=None,
     timoshenko=None,
     hht_alpha: float | None = None,
+    progress: bool | None = None,
 ) -> TimeDomainSolution:
     """Periodic steady response of the track by finite elements and Newmark time stepping.
 
@@ -235,6 +237,10 @@ def simulate_time_domain(
         (1 - alpha) / (1 + alpha) per step), while a resolved one loses about
         alpha (omega dt)^4 / 10 of its amplitude per step.  Default: 0 on the
         Euler–Bernoulli rail, 0.1 on a Timoshenko rail.
+    progress : bool or None
+        A ``tqdm`` bar counting the periods (`railtrack.solvers.progress`):
+        None shows it for a run that also warns `LongRunWarning` (estimated
+        past a minute), True or False force it.
 
     Returns
     -------
@@ -298,7 +304,11 @@ def simulate_time_domain(
                 raise ValueError(f"{name} must be a finite number > 0; got {value!r}")
         if warn_step_error is not None and not (np.isfinite(warn_step_error) and warn_step_error > 0):
             raise ValueError(f"warn_step_error must be a finite number > 0 or None; got {warn_step_error!r}")
-        check_run_cost(sleepers_on_ring(passage), elements_per_span, steps_per_period, max_periods)
+        cost = check_run_cost(sleepers_on_ring(passage), elements_per_span, steps_per_period,
+                              max_periods)
+        # a bar exactly where LongRunWarning speaks (none in the book, which has no such run)
+        shown = show_progress(progress, cost.seconds(min(TYPICAL_PERIODS, max_periods))
+                              > LONG_RUN_SECONDS)
         check_steps_per_period(passage, steps_per_period)
         check_wheel_arguments(wheel, profile, start)
         cell = None
@@ -356,46 +366,48 @@ def simulate_time_domain(
         previous_all = np.empty_like(record)
         changes: list[float] = []
         converged = False
-        for periods in range(1, max_periods + 1):
-            for n in range(n_steps):
-                record[n] = u[mesh.sleeper_dofs]
-                rail[n] = u[mesh.rail_dofs[0]]
-                states[n], rates[n] = u[watched], v[watched]
-                recorder.record(n, u, v)
-                try:
-                    u, v, a = stepper.step(u, v, a, (n + 1) % n_steps)
-                except NonFiniteLawError as error:
-                    raise NonFiniteLawError(f"{error}, {_when(passage, n_steps, n, periods)}{_FINITE}") from None
-                except RuntimeError as error:
-                    grown = float(np.max(np.abs(u[mesh.sleeper_dofs]))) / scale
-                    hint = f"; {instability_hint(law)}" if grown > 100.0 else ""
-                    raise RuntimeError(f"{error}, {_when(passage, n_steps, n, periods)}, the sleepers having "
-                                       f"reached {grown:.3g} times the static deflection{hint}") from None
-                reached = float(np.max(np.abs(u[mesh.sleeper_dofs])))
-                if not reached <= bound:  # also catches NaN
-                    raise RuntimeError(
-                        f"the response grew without bound in period {periods}: a sleeper reached "
-                        f"|w| = {reached:.3g} m, {reached / scale:.3g} times the static deflection scale "
-                        f"{scale:.3g} m, {_when(passage, n_steps, n, periods)}; {instability_hint(law)}"
-                    )
-            history[periods - 1] = record[:, 0]
-            current = history[periods - 1]
-            wheels_change = None if wheel is None else stepper.period_change()
-            if previous is not None:
-                if every_sleeper:  # the differing sleepers may settle at different rates
-                    peak = max(float(np.max(np.abs(record))), np.finfo(float).tiny)
-                    changes.append(float(np.max(np.abs(record - previous_all))) / peak)
-                else:
-                    peak = max(float(np.max(np.abs(current))), np.finfo(float).tiny)
-                    changes.append(float(np.max(np.abs(current - previous))) / peak)
-                if wheels_change is not None:
-                    changes[-1] = max(changes[-1], wheels_change)
-                converged = changes[-1] <= tol
+        with progress_bar(shown, max_periods, f"ring, {n_steps} steps a period", "periods") as bar:
+            for periods in range(1, max_periods + 1):
+                for n in range(n_steps):
+                    record[n] = u[mesh.sleeper_dofs]
+                    rail[n] = u[mesh.rail_dofs[0]]
+                    states[n], rates[n] = u[watched], v[watched]
+                    recorder.record(n, u, v)
+                    try:
+                        u, v, a = stepper.step(u, v, a, (n + 1) % n_steps)
+                    except NonFiniteLawError as error:
+                        raise NonFiniteLawError(f"{error}, {_when(passage, n_steps, n, periods)}{_FINITE}") from None
+                    except RuntimeError as error:
+                        grown = float(np.max(np.abs(u[mesh.sleeper_dofs]))) / scale
+                        hint = f"; {instability_hint(law)}" if grown > 100.0 else ""
+                        raise RuntimeError(f"{error}, {_when(passage, n_steps, n, periods)}, the sleepers having "
+                                           f"reached {grown:.3g} times the static deflection{hint}") from None
+                    reached = float(np.max(np.abs(u[mesh.sleeper_dofs])))
+                    if not reached <= bound:  # also catches NaN
+                        raise RuntimeError(
+                            f"the response grew without bound in period {periods}: a sleeper reached "
+                            f"|w| = {reached:.3g} m, {reached / scale:.3g} times the static deflection scale "
+                            f"{scale:.3g} m, {_when(passage, n_steps, n, periods)}; {instability_hint(law)}"
+                        )
+                history[periods - 1] = record[:, 0]
+                current = history[periods - 1]
+                wheels_change = None if wheel is None else stepper.period_change()
+                if previous is not None:
+                    if every_sleeper:  # the differing sleepers may settle at different rates
+                        peak = max(float(np.max(np.abs(record))), np.finfo(float).tiny)
+                        changes.append(float(np.max(np.abs(record - previous_all))) / peak)
+                    else:
+                        peak = max(float(np.max(np.abs(current))), np.finfo(float).tiny)
+                        changes.append(float(np.max(np.abs(current - previous))) / peak)
+                    if wheels_change is not None:
+                        changes[-1] = max(changes[-1], wheels_change)
+                    converged = changes[-1] <= tol
+                bar.to(periods, f"change {changes[-1]:.1e}, tol {tol:g}" if changes else None)
                 if converged and periods >= min_periods:
                     break
-            previous = current
-            if every_sleeper:
-                previous_all[:] = record
+                previous = current
+                if every_sleeper:
+                    previous_all[:] = record
 
         if not converged and max_periods > min_periods:
             last = f"{changes[-1]:.3g}" if changes else "not measured (one period)"

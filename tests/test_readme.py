@@ -1,0 +1,61 @@
+"""The README's code runs, and it tells a newcomer about every capability (issue 29, item 8).
+
+Every ```python block of README.md is run, each in a fresh namespace (each
+block stands on its own), except a block preceded by the marker line
+``<!-- readme-test: skip ... -->`` (an HTML comment: GitHub does not show
+it).  The marker is for a block that needs what the test cannot give (pint,
+which is optional) or names that other work delivers; the reason follows
+"skip" in the comment.  Warnings a block raises are allowed: the README
+says where one is expected.
+"""
+
+import re
+import subprocess
+import warnings
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+README = (ROOT / "README.md").read_text(encoding="utf-8")
+SKIP = "<!-- readme-test: skip"
+FENCE = re.compile(r"(?P<before>[^\n]*)\n```python\n(?P<code>.*?)\n```", re.S)
+
+
+def python_blocks() -> list[tuple[int, str, bool]]:
+    """(line, code, skipped) of every ```python block, in order."""
+    return [(README.count("\n", 0, m.start("code")) + 1, m["code"],
+             m["before"].lstrip().startswith(SKIP)) for m in FENCE.finditer(README)]
+
+
+BLOCKS = python_blocks()
+
+
+def test_the_readme_has_python_blocks_and_few_are_skipped():
+    # the pattern finds the blocks (else the test below would test nothing)
+    assert len(BLOCKS) >= 6
+    assert sum(skipped for *_, skipped in BLOCKS) <= 2
+
+
+@pytest.mark.parametrize("line, code", [(line, code) for line, code, skipped in BLOCKS
+                                        if not skipped], ids=lambda v: str(v)[:12])
+def test_each_python_block_runs(line, code, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # a block that writes a file writes it here
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        exec(compile(code, f"README.md, block at line {line}", "exec"), {"__name__": "readme"})
+
+
+@pytest.mark.parametrize("name", ["SleeperCell", "GapFoundation", "gravity", "Wheel", "CosineDip",
+                                  "TimoshenkoRail", "p2_force", "floquet", "check_branch",
+                                  "random_support", "continuation", "sweep", "progress",
+                                  "PlausibilityWarning", "pint", "summary()", "to_xarray()",
+                                  "to_netcdf", "make venv"])
+def test_the_readme_names_each_capability(name):
+    assert name in README
+
+
+def test_make_help_lists_venv():
+    shown = subprocess.run(["make", "-s", "help"], cwd=ROOT, capture_output=True, text=True,
+                           check=True).stdout
+    assert re.search(r"^make venv\s+-", shown, re.M), shown
