@@ -12,6 +12,7 @@ import pytest
 
 import railtrack as rt
 from railtrack.model.train import STANDARD_GRAVITY as G
+from railtrack.solvers.cell_static import cell_at_rest
 
 TRACK, TRAIN = rt.Track.paper(), rt.Train.paper()
 PAPER = rt.Passage(TRACK, TRAIN)
@@ -58,3 +59,15 @@ def test_the_foundations_carry_the_train_and_the_track():
 def test_gravity_must_not_be_negative():
     with pytest.raises(ValueError, match="gravity"):
         cell(-9.81)
+
+
+def test_a_tensionless_law_rests_like_its_compression_branch():
+    # At w = 0 a bilinear law's kink gave Newton the tension branch (0 N/m for a
+    # tensionless ballast): a track on nothing, a singular matrix.  Every sleeper
+    # presses under its weight, so the state at rest is the linear law's, whose
+    # foundation force is the weight of one sleeper and one span of rail.
+    for law in (rt.BilinearFoundation(20e6, 0.0, 2e5), rt.BilinearFoundation(20e6, 5e6, 2e5)):
+        rest = cell_at_rest(PAPER, rt.SleeperCell.identical(PAPER, law, 3, gravity=G))
+        assert rest.converged
+        np.testing.assert_allclose(rest.foundation_force, BAY, rtol=1e-9)
+        np.testing.assert_allclose(rest.sleeper_displacement, -BAY / 20e6, rtol=1e-9)

@@ -19,6 +19,8 @@ from ..model.passage import Passage
 
 __all__ = ["AtRest", "cell_at_rest"]
 
+_COMPRESSION_SIDE = 1e-12    # [m], far below any static deflection
+
 
 class AtRest(NamedTuple):
     """Static state of a cell under its own weight, per sleeper (N,)."""
@@ -60,7 +62,10 @@ def cell_at_rest(passage: Passage, cell, *, tol: float = 1e-12,
         if np.abs(residual).max() <= tol * scale:
             converged = True
             break
-        stiffness = _forces(cell, c[:, None], still, tangent=True)[0, :, 0]
+        # the tangent a hair on the compression side (w < 0): at w = 0 a law with a
+        # kink there (bilinear, tensionless) may give its tension branch, 0 N/m for a
+        # tensionless one, and a track resting on nothing has no static solution
+        stiffness = _forces(cell, c[:, None] - _COMPRESSION_SIDE, still, tangent=True)[0, :, 0]
         c = c - np.linalg.solve(first + second * stiffness, residual)
     force = _forces(cell, c[:, None], np.zeros((cell.sleepers, 1)))[:, 0]
     return AtRest(c, -(force + sleeper_weight) + 0.0, -force + 0.0, converged)
