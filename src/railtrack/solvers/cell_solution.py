@@ -25,12 +25,13 @@ from .field_chunks import CHUNK_ENTRIES, fourier_field
 from .result_repr import result_html, result_repr
 from .result_protocol import (contact_fraction, moving_contact_force, one_period,
                               rail_under_wheels, wheel_positions)
+from .export import Exports
 
 __all__ = ["CellSolution"]
 
 
 @dataclass(frozen=True)
-class CellSolution:
+class CellSolution(Exports):
     """A cell's periodic response; ``converged`` is True only if ``residual <= tol``.
 
     Attributes
@@ -244,6 +245,8 @@ class CellSolution:
         from .design_figures import design_summary
         return design_summary(self, **options)
 
+    _table_row = "time"     # to_dataframe: a row per instant
+
     def to_xarray(self, samples: int = 400, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).
 
@@ -253,17 +256,3 @@ class CellSolution:
         from .result_export import cell_dataset
         return cell_dataset(self, samples, x)
 
-    def to_dataframe(self, samples: int = 400, x=None):
-        """`to_xarray` as a `pandas.DataFrame`: a row per instant, a column per output and place."""
-        from .export import frame
-        return frame(self.to_xarray(samples, x), "time")
-
-    def to_netcdf(self, path, samples: int = 400, x=None):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from .export import write_netcdf
-        return write_netcdf(self.to_xarray(samples, x), path)
-
-    def to_csv(self, path, samples: int = 400, x=None):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from .export import write_csv
-        return write_csv(self.to_dataframe(samples, x), path)

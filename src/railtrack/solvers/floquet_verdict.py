@@ -55,6 +55,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .export import Exports
+
 __all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "NEUTRAL", "BOUND_MARGIN", "growth_bound", "search_verdict"]
 
 VERDICTS = ("stable", "unstable", "unknown")
@@ -75,7 +77,7 @@ SHIFT_FRACTIONS = (1e-3, 1e-2, 1e-1, 1.0)
 
 
 @dataclass(frozen=True, eq=False)
-class Floquet:
+class Floquet(Exports):
     """The Floquet multipliers of a periodic solution (`railtrack.floquet`).
 
     Attributes
@@ -173,25 +175,12 @@ class Floquet:
         from .result_repr import result_html
         return result_html(self)
 
+    _table_row = "multiplier"     # to_dataframe: a row per multiplier
+
     def to_xarray(self):
         """The multipliers as an `xarray.Dataset` (CF units; `railtrack.solvers.floquet_export`)."""
         from .floquet_export import floquet_dataset
         return floquet_dataset(self)
-
-    def to_dataframe(self):
-        """`to_xarray` as a `pandas.DataFrame`: one row per multiplier."""
-        from .export import frame
-        return frame(self.to_xarray(), "multiplier")
-
-    def to_netcdf(self, path):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from .export import write_netcdf
-        return write_netcdf(self.to_xarray(), path)
-
-    def to_csv(self, path):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from .export import write_csv
-        return write_csv(self.to_dataframe(), path)
 
 
 def growth_bound(solution) -> float:

@@ -29,6 +29,7 @@ from .output_errors import output_truncation_errors
 from .result_repr import result_html, result_repr
 from .result_protocol import (contact_fraction, moving_contact_force, one_period,
                               rail_under_wheels, single_at_rest, wheel_positions)
+from .export import Exports
 
 __all__ = ["Solution", "ConvergenceError", "ConvergenceWarning", "TruncationWarning", "DeflectionBowl",
            "fourier_series"]
@@ -42,7 +43,7 @@ def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) ->
 
 
 @dataclass(frozen=True, eq=False)
-class Solution:
+class Solution(Exports):
     """Periodic steady response of the sleeper (eq. 12) found by `railtrack.solve`.
 
     Attributes
@@ -329,6 +330,8 @@ class Solution:
         from .design_figures import design_summary
         return design_summary(self, **options)
 
+    _table_row = "time"     # to_dataframe: a row per instant
+
     def to_xarray(self, samples: int = 400, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).
 
@@ -338,17 +341,3 @@ class Solution:
         from .result_export import solution_dataset
         return solution_dataset(self, samples, x)
 
-    def to_dataframe(self, samples: int = 400, x=None):
-        """`to_xarray` as a `pandas.DataFrame`: a row per instant, a column per output and place."""
-        from .export import frame
-        return frame(self.to_xarray(samples, x), "time")
-
-    def to_netcdf(self, path, samples: int = 400, x=None):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from .export import write_netcdf
-        return write_netcdf(self.to_xarray(samples, x), path)
-
-    def to_csv(self, path, samples: int = 400, x=None):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from .export import write_csv
-        return write_csv(self.to_dataframe(samples, x), path)

@@ -29,12 +29,13 @@ from .field_chunks import chunk_length
 from .result_repr import result_html, result_repr
 from .wheel_extremes import anchor_sag, extremes, loss_of_contact
 from .result_protocol import one_period, rail_under_wheels, wheel_positions
+from .export import Exports
 
 __all__ = ["WheelSolution"]
 
 
 @dataclass(frozen=True)
-class WheelSolution:
+class WheelSolution(Exports):
     """Wheels, rail and sleepers in the steady state; ``converged`` only if the residual <= tol.
 
     Attributes
@@ -315,6 +316,8 @@ class WheelSolution:
         from .design_figures import design_summary
         return design_summary(self, **options)
 
+    _table_row = "time"     # to_dataframe: a row per instant
+
     def to_xarray(self, samples: int = 400, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).
 
@@ -324,17 +327,3 @@ class WheelSolution:
         from .result_export import wheel_dataset
         return wheel_dataset(self, samples, x)
 
-    def to_dataframe(self, samples: int = 400, x=None):
-        """`to_xarray` as a `pandas.DataFrame`: a row per instant, a column per output and place."""
-        from .export import frame
-        return frame(self.to_xarray(samples, x), "time")
-
-    def to_netcdf(self, path, samples: int = 400, x=None):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from .export import write_netcdf
-        return write_netcdf(self.to_xarray(samples, x), path)
-
-    def to_csv(self, path, samples: int = 400, x=None):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from .export import write_csv
-        return write_csv(self.to_dataframe(samples, x), path)

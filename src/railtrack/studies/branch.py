@@ -23,6 +23,7 @@ from ..model.track import Track
 from ..model.train import Train
 from ..solvers.truncation import truncation_error
 from .study_repr import study_html, study_repr
+from ..solvers.export import Exports
 
 __all__ = ["Branch", "Fold", "StabilityChange", "TRACK_FIELDS", "TRAIN_FIELDS", "replaced", "check_parameter",
            "scalar", "hermite_turning_value"]
@@ -131,7 +132,7 @@ class StabilityChange:
 
 
 @dataclass(frozen=True, eq=False)
-class Branch:
+class Branch(Exports):
     """Solutions of eq. (17) along a curve in one scalar parameter.
 
     Attributes
@@ -304,17 +305,3 @@ class Branch:
         from .study_export import branch_dataset
         return branch_dataset(self, samples)
 
-    def to_dataframe(self, samples: int = 512):
-        """`to_xarray` as a `pandas.DataFrame`: one row per point."""
-        from .study_export import study_frame
-        return study_frame(self.to_xarray(samples))
-
-    def to_netcdf(self, path, samples: int = 512):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from ..solvers.export import write_netcdf
-        return write_netcdf(self.to_xarray(samples), path)
-
-    def to_csv(self, path, samples: int = 512):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from ..solvers.export import write_csv
-        return write_csv(self.to_dataframe(samples), path)

@@ -54,6 +54,7 @@ from ..solvers.solution import TruncationWarning
 from ..solvers.stability_hint import UnstableSolutionWarning, cell_verdict
 from .random_support_batch import POINTS_PER_SPAN, TIMES, linear_draws
 from .study_repr import study_html, study_repr
+from ..solvers.export import Exports
 
 __all__ = ["RandomSupport", "random_support", "scaled_law", "lognormal_factors"]
 
@@ -91,7 +92,7 @@ def scaled_law(law, factor: float):
 
 
 @dataclass(frozen=True)
-class RandomSupport:
+class RandomSupport(Exports):
     """Draws of a random-support Monte Carlo.
 
     Attributes
@@ -154,21 +155,6 @@ class RandomSupport:
         """Every draw as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""
         from .study_export import random_support_dataset
         return random_support_dataset(self)
-
-    def to_dataframe(self):
-        """`to_xarray` as a `pandas.DataFrame`: one row per draw."""
-        from .study_export import study_frame
-        return study_frame(self.to_xarray())
-
-    def to_netcdf(self, path):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from ..solvers.export import write_netcdf
-        return write_netcdf(self.to_xarray(), path)
-
-    def to_csv(self, path):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from ..solvers.export import write_csv
-        return write_csv(self.to_dataframe(), path)
 
 
 def _peaks(solution) -> tuple[float, float]:

@@ -50,6 +50,7 @@ from .sweep_members import (BLOCK, MAX_RESULT_BYTES, check_members_conditioning,
                             solve_block, split_fields)
 from .sweep_stability import member_stability, require_whole_sleepers, stability_mode
 from .study_repr import study_html, study_repr
+from ..solvers.export import Exports
 
 __all__ = ["Sweep", "sweep", "BLOCK", "MAX_RESULT_BYTES"]
 
@@ -58,7 +59,7 @@ PROGRESS_MEMBERS = 50_000
 
 
 @dataclass(frozen=True, eq=False)
-class Sweep:
+class Sweep(Exports):
     """The members of a `sweep`, in the order of the swept values.
 
     Attributes
@@ -147,21 +148,6 @@ class Sweep:
         """Every member as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""
         from .study_export import sweep_dataset
         return sweep_dataset(self)
-
-    def to_dataframe(self):
-        """`to_xarray` as a `pandas.DataFrame`: one row per member (one per swept value)."""
-        from .study_export import study_frame
-        return study_frame(self.to_xarray())
-
-    def to_netcdf(self, path):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from ..solvers.export import write_netcdf
-        return write_netcdf(self.to_xarray(), path)
-
-    def to_csv(self, path):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from ..solvers.export import write_csv
-        return write_csv(self.to_dataframe(), path)
 
 
 def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto", *,

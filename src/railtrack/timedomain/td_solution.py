@@ -9,12 +9,13 @@ import numpy as np
 
 from ..model.passage import Passage
 from .td_repr import time_domain_html, time_domain_repr
+from ..solvers.export import Exports
 
 __all__ = ["TimeDomainSolution"]
 
 
 @dataclass(frozen=True, eq=False)
-class TimeDomainSolution:
+class TimeDomainSolution(Exports):
     """Periodic steady response of the FE ring found by `simulate_time_domain`.
 
     Attributes
@@ -149,22 +150,10 @@ class TimeDomainSolution:
     def _repr_html_(self) -> str:
         return time_domain_html(self)
 
+    _table_row = "time"     # to_dataframe: a row per instant
+
     def to_xarray(self):
         """The last period as an `xarray.Dataset` (CF units; `railtrack.timedomain.td_export`)."""
         from .td_export import time_domain_dataset
         return time_domain_dataset(self)
 
-    def to_dataframe(self):
-        """`to_xarray` as a `pandas.DataFrame`: one row per time."""
-        from ..solvers.export import frame
-        return frame(self.to_xarray(), "time")
-
-    def to_netcdf(self, path):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from ..solvers.export import write_netcdf
-        return write_netcdf(self.to_xarray(), path)
-
-    def to_csv(self, path):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from ..solvers.export import write_csv
-        return write_csv(self.to_dataframe(), path)
