@@ -22,16 +22,16 @@ from ..equations.positions import check_positions, checked_times
 from ..model.passage import Passage
 from .cell_static import cell_at_rest
 from .field_chunks import CHUNK_ENTRIES, fourier_field
-from .result_repr import result_html, result_repr
 from .result_protocol import (contact_fraction, moving_contact_force, one_period,
                               rail_under_wheels, wheel_positions)
 from .export import Exports
+from .result_repr import ShortRepr, cell_rows
 
 __all__ = ["CellSolution"]
 
 
-@dataclass(frozen=True)
-class CellSolution(Exports):
+@dataclass(frozen=True, repr=False)
+class CellSolution(ShortRepr, Exports):
     """A cell's periodic response; ``converged`` is True only if ``residual <= tol``.
 
     Attributes
@@ -230,11 +230,7 @@ class CellSolution(Exports):
         """The rail at each wheel's contact point [m], (K,) + t.shape."""
         return rail_under_wheels(self, t)
 
-    def __repr__(self) -> str:
-        return result_repr(self)
-
-    def _repr_html_(self) -> str:
-        return result_html(self)
+    _rows = cell_rows     # __repr__, _repr_html_: ShortRepr
 
     def summary(self, **options):
         """Design figures per sleeper in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).

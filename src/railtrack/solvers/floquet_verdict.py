@@ -56,6 +56,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .export import Exports
+from .result_repr import ShortRepr, floquet_rows
 
 __all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "NEUTRAL", "BOUND_MARGIN", "growth_bound", "search_verdict"]
 
@@ -76,8 +77,8 @@ SHIFT_FRACTIONS = (1e-3, 1e-2, 1e-1, 1.0)
 """Shifts kappa tried, above -min k, as fractions of the range of k (and kappa = 0 if min k > 0)."""
 
 
-@dataclass(frozen=True, eq=False)
-class Floquet(Exports):
+@dataclass(frozen=True, eq=False, repr=False)
+class Floquet(ShortRepr, Exports):
     """The Floquet multipliers of a periodic solution (`railtrack.floquet`).
 
     Attributes
@@ -167,13 +168,7 @@ class Floquet(Exports):
             raise ValueError(f"verdict must be one of {VERDICTS}; got {self.verdict!r}")
         object.__setattr__(self, "stable", {"stable": True, "unstable": False}.get(self.verdict))
 
-    def __repr__(self) -> str:
-        from .result_repr import result_repr
-        return result_repr(self)
-
-    def _repr_html_(self) -> str:
-        from .result_repr import result_html
-        return result_html(self)
+    _rows = floquet_rows     # __repr__, _repr_html_: ShortRepr
 
     _table_row = "multiplier"     # to_dataframe: a row per multiplier
 

@@ -26,10 +26,10 @@ from ..equations.moment import kink_coefficients, kink_sum
 from ..equations.positions import checked_times
 from .convergence import ConvergenceError, ConvergenceWarning, TruncationWarning
 from .output_errors import output_truncation_errors
-from .result_repr import result_html, result_repr
 from .result_protocol import (contact_fraction, moving_contact_force, one_period,
                               rail_under_wheels, single_at_rest, wheel_positions)
 from .export import Exports
+from .result_repr import ShortRepr, solution_rows
 
 __all__ = ["Solution", "ConvergenceError", "ConvergenceWarning", "TruncationWarning", "DeflectionBowl",
            "fourier_series"]
@@ -42,8 +42,8 @@ def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) ->
     return (phases @ coefficients).real
 
 
-@dataclass(frozen=True, eq=False)
-class Solution(Exports):
+@dataclass(frozen=True, eq=False, repr=False)
+class Solution(ShortRepr, Exports):
     """Periodic steady response of the sleeper (eq. 12) found by `railtrack.solve`.
 
     Attributes
@@ -315,11 +315,7 @@ class Solution(Exports):
         """The sleeper before the train arrives (this model has no self-weight): 0 N, 0 m."""
         return single_at_rest(self.passage, self.foundation)
 
-    def __repr__(self) -> str:
-        return result_repr(self)
-
-    def _repr_html_(self) -> str:
-        return result_html(self)
+    _rows = solution_rows     # __repr__, _repr_html_: ShortRepr
 
     def summary(self, **options):
         """Design figures in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).

@@ -26,16 +26,16 @@ from ..equations.wheel_train_receptance import wheel_train_receptance
 from ..model.passage import Passage
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
-from .result_repr import result_html, result_repr
 from .wheel_extremes import anchor_sag, extremes, loss_of_contact
 from .result_protocol import one_period, rail_under_wheels, wheel_positions
 from .export import Exports
+from .result_repr import ShortRepr, wheel_rows
 
 __all__ = ["WheelSolution"]
 
 
-@dataclass(frozen=True)
-class WheelSolution(Exports):
+@dataclass(frozen=True, repr=False)
+class WheelSolution(ShortRepr, Exports):
     """Wheels, rail and sleepers in the steady state; ``converged`` only if the residual <= tol.
 
     Attributes
@@ -301,11 +301,7 @@ class WheelSolution(Exports):
         """The track under its own weight before the train arrives (`CellSolution.at_rest`)."""
         return self.sleepers.at_rest()
 
-    def __repr__(self) -> str:
-        return result_repr(self)
-
-    def _repr_html_(self) -> str:
-        return result_html(self)
+    _rows = wheel_rows     # __repr__, _repr_html_: ShortRepr
 
     def summary(self, **options):
         """Design figures; max P / Q beside Eisenmann's factor in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).

@@ -22,8 +22,9 @@ from ..solvers.solution import Solution
 from ..model.track import Track
 from ..model.train import Train
 from ..solvers.truncation import truncation_error
-from .study_repr import study_html, study_repr
 from ..solvers.export import Exports
+from ..solvers.result_repr import ShortRepr
+from .study_repr import branch_rows
 
 __all__ = ["Branch", "Fold", "StabilityChange", "TRACK_FIELDS", "TRAIN_FIELDS", "replaced", "check_parameter",
            "scalar", "hermite_turning_value"]
@@ -131,8 +132,8 @@ class StabilityChange:
     gains: bool
 
 
-@dataclass(frozen=True, eq=False)
-class Branch(Exports):
+@dataclass(frozen=True, eq=False, repr=False)
+class Branch(ShortRepr, Exports):
     """Solutions of eq. (17) along a curve in one scalar parameter.
 
     Attributes
@@ -291,11 +292,7 @@ class Branch(Exports):
         rows = [(1 - w) * c[i] + w * c[j] for i, j, w in zip(before, after, weight)]
         return np.array(rows).reshape(-1, self.harmonics + 1)
 
-    def __repr__(self) -> str:
-        return study_repr(self)
-
-    def _repr_html_(self) -> str:
-        return study_html(self)
+    _rows = branch_rows     # __repr__, _repr_html_: ShortRepr
 
     def to_xarray(self, samples: int = 512):
         """Every point as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`).

@@ -53,8 +53,9 @@ from ..solvers.chunk_map import chunk_bounds, map_chunks, show_progress
 from ..solvers.solution import TruncationWarning
 from ..solvers.stability_hint import UnstableSolutionWarning, cell_verdict
 from .random_support_batch import POINTS_PER_SPAN, TIMES, linear_draws
-from .study_repr import study_html, study_repr
 from ..solvers.export import Exports
+from ..solvers.result_repr import ShortRepr
+from .study_repr import random_support_rows
 
 __all__ = ["RandomSupport", "random_support", "scaled_law", "lognormal_factors"]
 
@@ -91,8 +92,8 @@ def scaled_law(law, factor: float):
     return dataclasses.replace(law, **changes)
 
 
-@dataclass(frozen=True)
-class RandomSupport(Exports):
+@dataclass(frozen=True, repr=False)
+class RandomSupport(ShortRepr, Exports):
     """Draws of a random-support Monte Carlo.
 
     Attributes
@@ -145,11 +146,7 @@ class RandomSupport(Exports):
         return {"peak_seat_load": np.quantile(self.peak_seat_load[ok], q),
                 "peak_moment": np.quantile(self.peak_moment[ok], q)}
 
-    def __repr__(self) -> str:
-        return study_repr(self)
-
-    def _repr_html_(self) -> str:
-        return study_html(self)
+    _rows = random_support_rows     # __repr__, _repr_html_: ShortRepr
 
     def to_xarray(self):
         """Every draw as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""

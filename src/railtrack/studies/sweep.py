@@ -49,8 +49,9 @@ from .sweep_members import (BLOCK, MAX_RESULT_BYTES, check_members_conditioning,
                             polynomial_samples, predicted_harmonics, require_fits, rows,
                             solve_block, split_fields)
 from .sweep_stability import member_stability, require_whole_sleepers, stability_mode
-from .study_repr import study_html, study_repr
 from ..solvers.export import Exports
+from ..solvers.result_repr import ShortRepr
+from .study_repr import sweep_rows
 
 __all__ = ["Sweep", "sweep", "BLOCK", "MAX_RESULT_BYTES"]
 
@@ -58,8 +59,8 @@ PROGRESS_MEMBERS = 50_000
 """A sweep of this many members or more shows its progress unless told otherwise."""
 
 
-@dataclass(frozen=True, eq=False)
-class Sweep(Exports):
+@dataclass(frozen=True, eq=False, repr=False)
+class Sweep(ShortRepr, Exports):
     """The members of a `sweep`, in the order of the swept values.
 
     Attributes
@@ -138,11 +139,7 @@ class Sweep(Exports):
             message=f"member {index} of a sweep: {state}, relative residual "
                     f"{self.residual[index]:.2e} after {self.iterations[index]} Newton steps")
 
-    def __repr__(self) -> str:
-        return study_repr(self)
-
-    def _repr_html_(self) -> str:
-        return study_html(self)
+    _rows = sweep_rows     # __repr__, _repr_html_: ShortRepr
 
     def to_xarray(self):
         """Every member as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""

@@ -8,14 +8,15 @@ from typing import Any
 import numpy as np
 
 from ..model.passage import Passage
-from .td_repr import time_domain_html, time_domain_repr
 from ..solvers.export import Exports
+from ..solvers.result_repr import ShortRepr
+from .td_repr import time_domain_rows
 
 __all__ = ["TimeDomainSolution"]
 
 
-@dataclass(frozen=True, eq=False)
-class TimeDomainSolution(Exports):
+@dataclass(frozen=True, eq=False, repr=False)
+class TimeDomainSolution(ShortRepr, Exports):
     """Periodic steady response of the FE ring found by `simulate_time_domain`.
 
     Attributes
@@ -144,11 +145,7 @@ class TimeDomainSolution(Exports):
                              "wheel=Wheel(...)) for contact forces")
         return loss_of_contact(self.contact_forces, float(self.times[1] - self.times[0]))
 
-    def __repr__(self) -> str:
-        return time_domain_repr(self)
-
-    def _repr_html_(self) -> str:
-        return time_domain_html(self)
+    _rows = time_domain_rows     # __repr__, _repr_html_: ShortRepr
 
     _table_row = "time"     # to_dataframe: a row per instant
 
