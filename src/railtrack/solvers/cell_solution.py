@@ -24,6 +24,7 @@ from .cell_static import cell_at_rest
 from .field_chunks import CHUNK_ENTRIES, fourier_field
 from .result_protocol import (contact_fraction, moving_contact_force, one_period,
                               rail_under_wheels, wheel_positions)
+from .design_figures import DesignFigures
 from .export import Exports
 from .result_repr import ShortRepr, cell_rows
 
@@ -31,7 +32,7 @@ __all__ = ["CellSolution"]
 
 
 @dataclass(frozen=True, repr=False)
-class CellSolution(ShortRepr, Exports):
+class CellSolution(ShortRepr, DesignFigures, Exports):
     """A cell's periodic response; ``converged`` is True only if ``residual <= tol``.
 
     Attributes
@@ -231,15 +232,6 @@ class CellSolution(ShortRepr, Exports):
         return rail_under_wheels(self, t)
 
     _rows = cell_rows     # __repr__, _repr_html_: ShortRepr
-
-    def summary(self, **options):
-        """Design figures per sleeper in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
-
-        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
-        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
-        """
-        from .design_figures import design_summary
-        return design_summary(self, **options)
 
     _table_row = "time"     # to_dataframe: a row per instant
 

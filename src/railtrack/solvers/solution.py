@@ -28,6 +28,7 @@ from .convergence import ConvergenceError, ConvergenceWarning, TruncationWarning
 from .output_errors import output_truncation_errors
 from .result_protocol import (contact_fraction, moving_contact_force, one_period,
                               rail_under_wheels, single_at_rest, wheel_positions)
+from .design_figures import DesignFigures
 from .export import Exports
 from .result_repr import ShortRepr, solution_rows
 
@@ -43,7 +44,7 @@ def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) ->
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class Solution(ShortRepr, Exports):
+class Solution(ShortRepr, DesignFigures, Exports):
     """Periodic steady response of the sleeper (eq. 12) found by `railtrack.solve`.
 
     Attributes
@@ -316,15 +317,6 @@ class Solution(ShortRepr, Exports):
         return single_at_rest(self.passage, self.foundation)
 
     _rows = solution_rows     # __repr__, _repr_html_: ShortRepr
-
-    def summary(self, **options):
-        """Design figures in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
-
-        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
-        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
-        """
-        from .design_figures import design_summary
-        return design_summary(self, **options)
 
     _table_row = "time"     # to_dataframe: a row per instant
 

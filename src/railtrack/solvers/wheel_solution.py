@@ -28,6 +28,7 @@ from .cell_solution import CellSolution
 from .field_chunks import chunk_length
 from .wheel_extremes import anchor_sag, extremes, loss_of_contact
 from .result_protocol import one_period, rail_under_wheels, wheel_positions
+from .design_figures import DesignFigures
 from .export import Exports
 from .result_repr import ShortRepr, wheel_rows
 
@@ -35,7 +36,7 @@ __all__ = ["WheelSolution"]
 
 
 @dataclass(frozen=True, repr=False)
-class WheelSolution(ShortRepr, Exports):
+class WheelSolution(ShortRepr, DesignFigures, Exports):
     """Wheels, rail and sleepers in the steady state; ``converged`` only if the residual <= tol.
 
     Attributes
@@ -302,15 +303,6 @@ class WheelSolution(ShortRepr, Exports):
         return self.sleepers.at_rest()
 
     _rows = wheel_rows     # __repr__, _repr_html_: ShortRepr
-
-    def summary(self, **options):
-        """Design figures; max P / Q beside Eisenmann's factor in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
-
-        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
-        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
-        """
-        from .design_figures import design_summary
-        return design_summary(self, **options)
 
     _table_row = "time"     # to_dataframe: a row per instant
 
