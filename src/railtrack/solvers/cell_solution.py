@@ -22,8 +22,7 @@ from ..equations.positions import check_positions, checked_times
 from ..model.passage import Passage
 from .cell_static import cell_at_rest
 from .field_chunks import CHUNK_ENTRIES, fourier_field
-from .result_protocol import (contact_fraction, moving_contact_force, one_period,
-                              rail_under_wheels, wheel_positions)
+from .result_protocol import SharedOutputs
 from .design_figures import DesignFigures
 from .export import Exports
 from .result_repr import ShortRepr, cell_rows
@@ -32,7 +31,7 @@ __all__ = ["CellSolution"]
 
 
 @dataclass(frozen=True, repr=False)
-class CellSolution(ShortRepr, DesignFigures, Exports):
+class CellSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
     """A cell's periodic response; ``converged`` is True only if ``residual <= tol``.
 
     Attributes
@@ -134,10 +133,6 @@ class CellSolution(ShortRepr, DesignFigures, Exports):
             out[j] = -np.asarray(law.force(w[j], v[j]), dtype=float)
         return out + 0.0     # a law that never pushes reads 0 N, not -0 N
 
-    def contact_fraction(self, samples: int = 2048) -> np.ndarray:
-        """Share of the period in which each sleeper presses on its foundation (force > 0) [-]."""
-        return contact_fraction(self, samples)
-
     def rail_above_sleepers(self, t: ArrayLike) -> np.ndarray:
         """Rail above each sleeper, w_j + p_j / (k1_j + eta1_j d/dt) [m], (N,) + t.shape."""
         cell = self.cell
@@ -207,29 +202,10 @@ class CellSolution(ShortRepr, DesignFigures, Exports):
         """
         return cell_at_rest(self.passage, self.cell)
 
-    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """(t, w): times over [0, T) [s], (samples,), and every sleeper's w, (N, samples) [m].
-
-        max(400, 4 m) samples by default (`railtrack.solvers.result_protocol`).
-        """
-        return one_period(self, samples)
-
     @property
     def sleeper_shape(self) -> tuple[int, ...]:
         """(N,): per-sleeper outputs are (N,) + t.shape (`result_protocol`)."""
         return (self.sleepers,)
-
-    def wheel_position(self, t: ArrayLike) -> np.ndarray:
-        """x_k(t) = v t - d_k [m], wheel k past sleeper 0; (K,) + t.shape."""
-        return wheel_positions(self.passage, t)
-
-    def contact_force(self, t: ArrayLike) -> np.ndarray:
-        """Q_k at every t [N], (K,) + t.shape: the loads move at constant force."""
-        return moving_contact_force(self.passage, t)
-
-    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
-        """The rail at each wheel's contact point [m], (K,) + t.shape."""
-        return rail_under_wheels(self, t)
 
     _rows = cell_rows     # __repr__, _repr_html_: ShortRepr
 

@@ -26,8 +26,7 @@ from ..equations.moment import kink_coefficients, kink_sum
 from ..equations.positions import checked_times
 from .convergence import ConvergenceError, ConvergenceWarning, TruncationWarning
 from .output_errors import output_truncation_errors
-from .result_protocol import (contact_fraction, moving_contact_force, one_period,
-                              rail_under_wheels, single_at_rest, wheel_positions)
+from .result_protocol import SharedOutputs, single_at_rest
 from .design_figures import DesignFigures
 from .export import Exports
 from .result_repr import ShortRepr, solution_rows
@@ -44,7 +43,7 @@ def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) ->
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class Solution(ShortRepr, DesignFigures, Exports):
+class Solution(SharedOutputs, ShortRepr, DesignFigures, Exports):
     """Periodic steady response of the sleeper (eq. 12) found by `railtrack.solve`.
 
     Attributes
@@ -266,30 +265,12 @@ class Solution(ShortRepr, DesignFigures, Exports):
             dtype=float,
         )
 
-    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
-        """Rail displacement at the contact point of each axle of a wagon [m].
-
-        Axle k (offset d_k behind the wagon's first axle) is at x = v t - d_k
-        at time t, so this is ``rail_displacement(t, v t - d_k)``.
-
-        Returns
-        -------
-        ndarray, shape (K,) + t.shape
-            [k, ...] under axle k, in the order of ``train.axle_positions``
-            (wheels first, time last, as every result: `result_protocol`).
-        """
-        return rail_under_wheels(self, t)
-
     def deflection_bowl(self, t: ArrayLike, x: ArrayLike) -> DeflectionBowl:
         """The rail and the sleepers along the track at one instant, or at several [m].
 
         See `railtrack.equations.bowl.deflection_bowl`, which this calls.
         """
         return deflection_bowl(self, t, x)
-
-    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """(t, w): `samples` times over [0, T) [s] and w there [m]; max(400, 4 m) by default."""
-        return one_period(self, samples)
 
     @property
     def sleeper_shape(self) -> tuple[int, ...]:
@@ -299,18 +280,6 @@ class Solution(ShortRepr, DesignFigures, Exports):
     def rail_above_sleepers(self, t: ArrayLike) -> np.ndarray:
         """The rail above the sleeper, ``rail_displacement(t, 0)`` [m], shape of t."""
         return self.rail_displacement(t, 0.0)
-
-    def wheel_position(self, t: ArrayLike) -> np.ndarray:
-        """x_k(t) = v t - d_k [m], wheel k past the observed sleeper; (K,) + t.shape."""
-        return wheel_positions(self.passage, t)
-
-    def contact_force(self, t: ArrayLike) -> np.ndarray:
-        """Q_k at every t [N], (K,) + t.shape: the loads move at constant force."""
-        return moving_contact_force(self.passage, t)
-
-    def contact_fraction(self, samples: int = 2048) -> np.ndarray:
-        """Share of the period with the foundation in compression [-] (`result_protocol`)."""
-        return contact_fraction(self, samples)
 
     def at_rest(self):
         """The sleeper before the train arrives (this model has no self-weight): 0 N, 0 m."""

@@ -27,7 +27,7 @@ from ..model.passage import Passage
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
 from .wheel_extremes import anchor_sag, extremes, loss_of_contact
-from .result_protocol import one_period, rail_under_wheels, wheel_positions
+from .result_protocol import SharedOutputs
 from .design_figures import DesignFigures
 from .export import Exports
 from .result_repr import ShortRepr, wheel_rows
@@ -36,7 +36,7 @@ __all__ = ["WheelSolution"]
 
 
 @dataclass(frozen=True, repr=False)
-class WheelSolution(ShortRepr, DesignFigures, Exports):
+class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
     """Wheels, rail and sleepers in the steady state; ``converged`` only if the residual <= tol.
 
     Attributes
@@ -120,14 +120,6 @@ class WheelSolution(ShortRepr, DesignFigures, Exports):
             phases = np.exp(1j * np.multiply.outer(flat[start:start + step], omega))
             out[:, start:start + step] = 2 * (harmonics @ phases.T).real
         return out.reshape((harmonics.shape[0],) + t.shape)
-
-    def wheel_position(self, t: ArrayLike) -> np.ndarray:
-        """x_k(t) = v t - d_k [m], wheel k's distance from sleeper 0; shape (K,) + t.shape.
-
-        Take it modulo the wagon length H to read it within one wagon, where
-        the profile and the cell repeat.
-        """
-        return wheel_positions(self.passage, t)
 
     def compression(self, t: ArrayLike) -> np.ndarray:
         """delta_k(t) [m], shape (K,) + t.shape; the wheel is off the rail where < 0."""
@@ -255,14 +247,6 @@ class WheelSolution(ShortRepr, DesignFigures, Exports):
         """Per wheel: the share of the period off the rail, and the longest spell off it [s]."""
         return loss_of_contact(self, samples)
 
-    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """(t, w): times over [0, T) [s] and every sleeper's w there, (N, samples) [m].
-
-        max(400, 4 m) samples by default (`railtrack.solvers.result_protocol`);
-        ``one_period(n)[0]`` are the times alone, e.g. for `contact_force`.
-        """
-        return one_period(self, samples)
-
     @property
     def frequencies(self) -> np.ndarray:
         """omega_n, n = -m..m [rad/s], of the sleepers' series."""
@@ -289,10 +273,6 @@ class WheelSolution(ShortRepr, DesignFigures, Exports):
     def rail_above_sleepers(self, t: ArrayLike) -> np.ndarray:
         """The rail above each sleeper (through its pad) [m], (N,) + t.shape."""
         return self.sleepers.rail_above_sleepers(t)
-
-    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
-        """The rail at each wheel's contact point [m], (K,) + t.shape."""
-        return rail_under_wheels(self, t)
 
     def contact_fraction(self, samples: int = 2048) -> np.ndarray:
         """Share of the period in which each sleeper presses on its foundation [-]."""
