@@ -17,29 +17,22 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ..equations.rail_field import rail_field_coefficients, seat_load_coefficients
+from ..equations.rail_field import seat_load_coefficients
 from ..equations.sleeper import rail_coefficients
 from ..model.passage import Passage
 from ..equations.bowl import DeflectionBowl, deflection_bowl
 from ..equations.load import load_coefficients
-from ..equations.moment import kink_coefficients, kink_sum
-from ..equations.positions import checked_times
+from ..equations.moment import kink_sum
 from .convergence import ConvergenceError, ConvergenceWarning, TruncationWarning
 from .output_errors import output_truncation_errors
 from .result_protocol import SharedOutputs, single_at_rest
+from .time_histories import fourier_series, rail_field_series
 from .design_figures import DesignFigures
 from .export import Exports
 from .result_repr import ShortRepr, solution_rows
 
 __all__ = ["Solution", "ConvergenceError", "ConvergenceWarning", "TruncationWarning", "DeflectionBowl",
-           "fourier_series"]
-
-
-def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) -> np.ndarray:
-    """Real sum_n c_n exp(i omega_n t) over a two-sided set, eq. (12), for any shape of t."""
-    t = checked_times(omega, t)
-    phases = np.exp(1j * np.multiply.outer(t, omega))
-    return (phases @ coefficients).real
+           "fourier_series"]     # fourier_series lives in time_histories: imported from here too
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -169,7 +162,7 @@ class Solution(SharedOutputs, ShortRepr, DesignFigures, Exports):
         if np.all(np.asarray(x) == 0.0):
             values = fourier_series(self.rail_coefficients(), self.frequencies, t)
             return values + np.zeros(np.shape(x))
-        return self._rail_field(t, x, 0)
+        return rail_field_series(self, t, x, 0)
 
     def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
                             kinks: str = "closed form") -> np.ndarray:
@@ -192,9 +185,9 @@ class Solution(SharedOutputs, ShortRepr, DesignFigures, Exports):
         """
         ei = self.passage.rail_bending_stiffness
         if kinks == "closed form":
-            return ei * self._rail_field(t, x, 1) + kink_sum(self.passage, t, x)
+            return ei * rail_field_series(self, t, x, 1) + kink_sum(self.passage, t, x)
         if kinks == "series":
-            return ei * self._rail_field(t, x, 2)
+            return ei * rail_field_series(self, t, x, 2)
         raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
 
     def truncation_errors(self, x: float = 0.0) -> dict[str, float]:
@@ -234,23 +227,6 @@ class Solution(SharedOutputs, ShortRepr, DesignFigures, Exports):
         omega = self.frequencies
         return fourier_series(
             seat_load_coefficients(self.passage, omega, self.coefficients), omega, t)
-
-    def _rail_field(self, t: ArrayLike, x: ArrayLike, which: int) -> np.ndarray:
-        """Re sum_n r_n(x) e^{i omega_n t}: displacement (0), curvature less its kinks (1), curvature (2)."""
-        t = checked_times(self.frequencies, t)
-        t, x = np.broadcast_arrays(t, np.asarray(x, dtype=float))
-        xs, x_index = np.unique(x, return_inverse=True)
-        ts, t_index = np.unique(t, return_inverse=True)
-        omega = self.frequencies
-        coefficients = rail_field_coefficients(self.passage, omega, self.coefficients, xs)[min(which, 1)]
-        if which == 1:
-            ei = self.passage.rail_bending_stiffness
-            coefficients = coefficients - kink_coefficients(self.passage, omega, xs) / ei
-        if ts.size * xs.size <= 4 * max(t.size, 1):   # a grid: one matrix product
-            table = (np.exp(1j * np.multiply.outer(ts, omega)) @ coefficients.T).real
-            return table[t_index.reshape(t.shape), x_index.reshape(x.shape)]
-        phases = np.exp(1j * np.multiply.outer(t, omega))
-        return np.einsum("...n,...n->...", coefficients[x_index.reshape(x.shape)], phases).real
 
     def foundation_force(self, t: ArrayLike) -> np.ndarray:
         """Force that the sleeper puts on the foundation, positive in compression [N].
