@@ -9,7 +9,8 @@ rail at any (t, x)), `energy` (the work
 of the pads, the foundation and the loads), `floquet` and `contour`
 (stability by Hill's method), `floquet_track` (its multipliers continued
 from a neighbouring solution), `floquet_assembly` (the `Floquet` result
-judged), and for a cell of N sleepers `cell_newton`,
+judged), `floquet_verdict` and `floquet_bound` (its verdict, and the a-priori
+estimate of |mu| it rests on), and for a cell of N sleepers `cell_newton`,
 `cell_step` (its structured Newton step), `cell_auto` (m = "auto"),
 `cell_truncation` (its truncation estimate, in the Floquet modes),
 `cell_static` (the track under its own weight), `cell_solution` and
