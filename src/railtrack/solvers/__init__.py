@@ -19,7 +19,8 @@ estimate of |mu| it rests on), and for a cell of N sleepers `cell_newton`,
 and the `SharedOutputs` mixin), `result_repr` (their short reprs and HTML
 tables: the `ShortRepr` mixin) and `export` (the `Exports` mixin); `convergence` (the
 errors and warnings of a solve that fell short); `wheel_extremes` (a wheel
-solution's contact force over a period);
+solution's contact force over a period) and `wheel_free_rail` (its rail
+under the wheels' varying forces, eq. 13.2);
 `design_figures` and `design_summary` (the ``summary()`` of every result:
 seat load, ballast pressure, rail moment and stress, dynamic factor).
 

@@ -22,11 +22,11 @@ from numpy.typing import ArrayLike
 
 from ..equations.moment import kink_sum
 from ..equations.positions import check_positions, checked_times
-from ..equations.wheel_train_receptance import wheel_train_receptance
 from ..model.passage import Passage
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
 from .wheel_extremes import anchor_sag, extremes, loss_of_contact
+from .wheel_free_rail import free_rail
 from .result_protocol import SharedOutputs
 from .design_figures import DesignFigures
 from .export import Exports
@@ -162,33 +162,6 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
         """The static sag at sleeper 0 of the wheels' uneven mean load [m] (`anchor_sag`)."""
         return anchor_sag(self)
 
-    def _free_rail(self, t: ArrayLike, x: ArrayLike, derivative: int) -> np.ndarray:
-        """The free rail under the wheels' varying forces, eq. (13.2) at (t, x) [m or 1/m].
-
-        The points are taken in blocks (`chunk_length`), every wheel's offset
-        at once, so that memory stays bounded and each harmonic's roots are
-        found once per block.
-        """
-        t = checked_times(2 * np.pi * self.grid / self.period, t)
-        t, x = np.broadcast_arrays(t, np.asarray(x, dtype=float))
-        flat_t, flat_x = t.ravel(), x.ravel()
-        out = np.zeros(flat_t.size)
-        omega = 2 * np.pi * self.grid / self.period
-        speed = float(self.passage.speed)
-        axles = np.asarray(self.passage.axle_positions, dtype=float)[:, None]
-        step = chunk_length(axles.size)
-        for start in range(0, flat_t.size, step):
-            part = slice(start, start + step)
-            offset = flat_x[part] - speed * flat_t[part] + axles                 # (K, P)
-            # points that move with the train share their offsets: each once
-            offsets, where = np.unique(offset, return_inverse=True)
-            for force, w in zip(self.contact_harmonics.T, omega):
-                shape = wheel_train_receptance(self.passage, float(w), offsets,
-                                               derivative)[where.reshape(offset.shape)]
-                # P presses down
-                out[part] -= 2 * (np.exp(1j * w * flat_t[part]) * (force @ shape)).real
-        return out.reshape(t.shape)
-
     def _check_positions(self, x: ArrayLike) -> None:
         """Refuse x whose phases round-off swamps, for the sleepers' and the wheels' harmonics."""
         top = max(float(self.sleepers.frequencies.max()),
@@ -205,7 +178,7 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
         `railtrack.CellSolution.rail_displacement` (too far or not finite: ValueError).
         """
         self._check_positions(x)
-        return (self.sleepers._field(t, x, 0) + self._free_rail(t, x, 0)
+        return (self.sleepers._field(t, x, 0) + free_rail(self, t, x, 0)
                 - self._anchor_sag)
 
     def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
@@ -224,7 +197,7 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
             static = ei * self.sleepers._field(t, x, 2)
         else:
             raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
-        return static + ei * self._free_rail(t, x, 2)
+        return static + ei * free_rail(self, t, x, 2)
 
     def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
         """Each sleeper's rail-seat load [N], (N,) + t.shape, positive in compression."""
