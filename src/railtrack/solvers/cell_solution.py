@@ -207,9 +207,8 @@ class CellSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
         """(N,): per-sleeper outputs are (N,) + t.shape (`result_protocol`)."""
         return (self.sleepers,)
 
-    _rows = cell_rows     # __repr__, _repr_html_: ShortRepr
-
-    _table_row = "time"     # to_dataframe: a row per instant
+    _rows = cell_rows                   # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "time"                 # to_dataframe: a row per instant
 
     def to_xarray(self, samples: int = 400, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).

@@ -139,9 +139,8 @@ class Floquet(ShortRepr, Exports):
             raise ValueError(f"verdict must be one of {VERDICTS}; got {self.verdict!r}")
         object.__setattr__(self, "stable", {"stable": True, "unstable": False}.get(self.verdict))
 
-    _rows = floquet_rows     # __repr__, _repr_html_: ShortRepr
-
-    _table_row = "multiplier"     # to_dataframe: a row per multiplier
+    _rows = floquet_rows                # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "multiplier"           # to_dataframe: a row per multiplier
 
     def to_xarray(self):
         """The multipliers as an `xarray.Dataset` (CF units; `railtrack.solvers.floquet_export`)."""

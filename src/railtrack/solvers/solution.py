@@ -261,9 +261,8 @@ class Solution(SharedOutputs, ShortRepr, DesignFigures, Exports):
         """The sleeper before the train arrives (this model has no self-weight): 0 N, 0 m."""
         return single_at_rest(self.passage, self.foundation)
 
-    _rows = solution_rows     # __repr__, _repr_html_: ShortRepr
-
-    _table_row = "time"     # to_dataframe: a row per instant
+    _rows = solution_rows               # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "time"                 # to_dataframe: a row per instant
 
     def to_xarray(self, samples: int = 400, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).

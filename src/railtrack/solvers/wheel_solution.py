@@ -255,9 +255,8 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
         """The track under its own weight before the train arrives (`CellSolution.at_rest`)."""
         return self.sleepers.at_rest()
 
-    _rows = wheel_rows     # __repr__, _repr_html_: ShortRepr
-
-    _table_row = "time"     # to_dataframe: a row per instant
+    _rows = wheel_rows                  # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "time"                 # to_dataframe: a row per instant
 
     def to_xarray(self, samples: int = 400, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).

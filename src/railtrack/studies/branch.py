@@ -243,7 +243,8 @@ class Branch(ShortRepr, Exports):
         rows = [(1 - w) * c[i] + w * c[j] for i, j, w in zip(before, after, weight)]
         return np.array(rows).reshape(-1, self.harmonics + 1)
 
-    _rows = branch_rows     # __repr__, _repr_html_: ShortRepr
+    _rows = branch_rows                 # __repr__, _repr_html_ (ShortRepr)
+    _table_row = None                   # to_dataframe: a row per point, converged's dimension
 
     def to_xarray(self, samples: int = 512):
         """Every point as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`).

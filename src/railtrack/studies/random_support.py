@@ -116,7 +116,8 @@ class RandomSupport(ShortRepr, Exports):
         return {"peak_seat_load": np.quantile(self.peak_seat_load[ok], q),
                 "peak_moment": np.quantile(self.peak_moment[ok], q)}
 
-    _rows = random_support_rows     # __repr__, _repr_html_: ShortRepr
+    _rows = random_support_rows         # __repr__, _repr_html_ (ShortRepr)
+    _table_row = None                   # to_dataframe: a row per draw, converged's dimension
 
     def to_xarray(self):
         """Every draw as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""

@@ -104,7 +104,8 @@ class Sweep(ShortRepr, Exports):
             message=f"member {index} of a sweep: {state}, relative residual "
                     f"{self.residual[index]:.2e} after {self.iterations[index]} Newton steps")
 
-    _rows = sweep_rows     # __repr__, _repr_html_: ShortRepr
+    _rows = sweep_rows                  # __repr__, _repr_html_ (ShortRepr)
+    _table_row = None                   # to_dataframe: a row per swept value, converged's dimension
 
     def to_xarray(self):
         """Every member as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""

@@ -145,9 +145,8 @@ class TimeDomainSolution(ShortRepr, Exports):
                              "wheel=Wheel(...)) for contact forces")
         return loss_of_contact(self.contact_forces, float(self.times[1] - self.times[0]))
 
-    _rows = time_domain_rows     # __repr__, _repr_html_: ShortRepr
-
-    _table_row = "time"     # to_dataframe: a row per instant
+    _rows = time_domain_rows            # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "time"                 # to_dataframe: a row per instant
 
     def to_xarray(self):
         """The last period as an `xarray.Dataset` (CF units; `railtrack.timedomain.td_export`)."""
