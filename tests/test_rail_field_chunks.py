@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import railtrack as rt
-import railtrack.solvers.wheel_solution as wheel_module
+import railtrack.solvers.wheel_free_rail as free_rail_module
 from railtrack.equations.cell_rail_field import (cell_offset_receptance,
                                                  cell_rail_field_coefficients)
 from railtrack.equations.cell_receptance import cell_moving_load
@@ -81,7 +81,7 @@ def test_the_wheels_free_rail_in_blocks_is_the_one_shot(wheels, monkeypatch):
     t = np.linspace(0.0, wheels.period, 29)[:, None]
     x = np.linspace(7.0, 11.0, 31)[None, :]            # 899 points: three blocks
     whole = wheels.rail_displacement(t, x), wheels.rail_bending_moment(t, x)
-    monkeypatch.setattr(wheel_module, "chunk_length", lambda *args, **kwargs: 400)
+    monkeypatch.setattr(free_rail_module, "chunk_length", lambda *args, **kwargs: 400)
     blocks = wheels.rail_displacement(t, x), wheels.rail_bending_moment(t, x)
     for one, other in zip(whole, blocks):
         np.testing.assert_allclose(other, one, rtol=0, atol=1e-13 * np.abs(one).max())

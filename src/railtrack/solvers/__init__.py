@@ -4,19 +4,23 @@
 (the paper's eq. 21), `newton`, `batch` (Newton on many systems at once),
 `truncation` (how many harmonics: m = "auto"), `conditioning`, `diagnosis`,
 `arguments` (checks of the arguments), `foundation_at_rest`, `solution`
-(the `Solution` and the time histories it defines), `energy` (the work
+(the `Solution`), `time_histories` (the Fourier series it sums and its
+rail at any (t, x)), `energy` (the work
 of the pads, the foundation and the loads), `floquet` and `contour`
 (stability by Hill's method), `floquet_track` (its multipliers continued
 from a neighbouring solution), `floquet_assembly` (the `Floquet` result
-judged), and for a cell of N sleepers `cell_newton`,
+judged), `floquet_verdict` and `floquet_bound` (its verdict, and the a-priori
+estimate of |mu| it rests on), and for a cell of N sleepers `cell_newton`,
 `cell_step` (its structured Newton step), `cell_auto` (m = "auto"),
 `cell_truncation` (its truncation estimate, in the Floquet modes),
 `cell_static` (the track under its own weight), `cell_solution` and
 `cell_floquet` (its Floquet multipliers, Hill's matrix of the cell);
-`result_protocol` (the questions every steady-state result answers, alike)
-and `result_repr` (their short reprs and HTML tables); `convergence` (the
+`result_protocol` (the questions every steady-state result answers, alike,
+and the `SharedOutputs` mixin), `result_repr` (their short reprs and HTML
+tables: the `ShortRepr` mixin) and `export` (the `Exports` mixin); `convergence` (the
 errors and warnings of a solve that fell short); `wheel_extremes` (a wheel
-solution's contact force over a period);
+solution's contact force over a period) and `wheel_free_rail` (its rail
+under the wheels' varying forces, eq. 13.2);
 `design_figures` and `design_summary` (the ``summary()`` of every result:
 seat load, ballast pressure, rail moment and stress, dynamic factor).
 

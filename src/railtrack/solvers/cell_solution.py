@@ -22,15 +22,16 @@ from ..equations.positions import check_positions, checked_times
 from ..model.passage import Passage
 from .cell_static import cell_at_rest
 from .field_chunks import CHUNK_ENTRIES, fourier_field
-from .result_repr import result_html, result_repr
-from .result_protocol import (contact_fraction, moving_contact_force, one_period,
-                              rail_under_wheels, wheel_positions)
+from .result_protocol import SharedOutputs
+from .design_figures import DesignFigures
+from .export import Exports
+from .result_repr import ShortRepr, cell_rows
 
 __all__ = ["CellSolution"]
 
 
-@dataclass(frozen=True)
-class CellSolution:
+@dataclass(frozen=True, repr=False)
+class CellSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
     """A cell's periodic response; ``converged`` is True only if ``residual <= tol``.
 
     Attributes
@@ -132,10 +133,6 @@ class CellSolution:
             out[j] = -np.asarray(law.force(w[j], v[j]), dtype=float)
         return out + 0.0     # a law that never pushes reads 0 N, not -0 N
 
-    def contact_fraction(self, samples: int = 2048) -> np.ndarray:
-        """Share of the period in which each sleeper presses on its foundation (force > 0) [-]."""
-        return contact_fraction(self, samples)
-
     def rail_above_sleepers(self, t: ArrayLike) -> np.ndarray:
         """Rail above each sleeper, w_j + p_j / (k1_j + eta1_j d/dt) [m], (N,) + t.shape."""
         cell = self.cell
@@ -205,44 +202,13 @@ class CellSolution:
         """
         return cell_at_rest(self.passage, self.cell)
 
-    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """(t, w): times over [0, T) [s], (samples,), and every sleeper's w, (N, samples) [m].
-
-        max(400, 4 m) samples by default (`railtrack.solvers.result_protocol`).
-        """
-        return one_period(self, samples)
-
     @property
     def sleeper_shape(self) -> tuple[int, ...]:
         """(N,): per-sleeper outputs are (N,) + t.shape (`result_protocol`)."""
         return (self.sleepers,)
 
-    def wheel_position(self, t: ArrayLike) -> np.ndarray:
-        """x_k(t) = v t - d_k [m], wheel k past sleeper 0; (K,) + t.shape."""
-        return wheel_positions(self.passage, t)
-
-    def contact_force(self, t: ArrayLike) -> np.ndarray:
-        """Q_k at every t [N], (K,) + t.shape: the loads move at constant force."""
-        return moving_contact_force(self.passage, t)
-
-    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
-        """The rail at each wheel's contact point [m], (K,) + t.shape."""
-        return rail_under_wheels(self, t)
-
-    def __repr__(self) -> str:
-        return result_repr(self)
-
-    def _repr_html_(self) -> str:
-        return result_html(self)
-
-    def summary(self, **options):
-        """Design figures per sleeper in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
-
-        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
-        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
-        """
-        from .design_figures import design_summary
-        return design_summary(self, **options)
+    _rows = cell_rows                   # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "time"                 # to_dataframe: a row per instant
 
     def to_xarray(self, samples: int = 400, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).
@@ -253,17 +219,3 @@ class CellSolution:
         from .result_export import cell_dataset
         return cell_dataset(self, samples, x)
 
-    def to_dataframe(self, samples: int = 400, x=None):
-        """`to_xarray` as a `pandas.DataFrame`: a row per instant, a column per output and place."""
-        from .export import frame
-        return frame(self.to_xarray(samples, x), "time")
-
-    def to_netcdf(self, path, samples: int = 400, x=None):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from .export import write_netcdf
-        return write_netcdf(self.to_xarray(samples, x), path)
-
-    def to_csv(self, path, samples: int = 400, x=None):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from .export import write_csv
-        return write_csv(self.to_dataframe(samples, x), path)

@@ -37,7 +37,7 @@ from ..model.validation import require_positive
 from .arguments import require_count
 from .design_summary import DesignSummary, eisenmann_factor, EISENMANN_RANGE_KMH, TRACK_QUALITY
 
-__all__ = ["design_summary"]
+__all__ = ["DesignFigures", "design_summary"]
 
 SECTION_MISMATCH = 0.1
 """Relative gap between the section's EI and the modelled rail's above which the summary says so."""
@@ -185,3 +185,16 @@ def design_summary(solution, *, section: RailSection | None = None, bearing_area
                          foundation_forces=foundation, bearing_area=bearing_area,
                          sagging_moment=sagging, hogging_moment=hogging, section=section,
                          notes=tuple(notes), **extra)
+
+
+class DesignFigures:
+    """``summary()`` of a steady-state result: `design_summary` of it."""
+
+    def summary(self, **options) -> DesignSummary:
+        """Design figures in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
+
+        Per sleeper of a cell; with wheels, max P / Q beside Eisenmann's factor.
+        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
+        ``track_quality`` and ``certainty`` (Eisenmann's s and t), ``points_per_span``.
+        """
+        return design_summary(self, **options)

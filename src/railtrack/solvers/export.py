@@ -47,16 +47,19 @@ from __future__ import annotations
 import dataclasses
 import numbers
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
-import xarray as xr
 
 from .arguments import require_count
 
+if TYPE_CHECKING:     # the results import this module: pandas and xarray load on first export
+    import pandas as pd
+    import xarray as xr
+
 __all__ = ["CONVENTIONS", "FIELD_UNITS", "variable", "complex_parts", "time_grid",
            "input_attrs", "law_attrs", "base_attrs", "flag", "write_netcdf", "frame",
-           "write_csv"]
+           "write_csv", "Exports"]
 
 CONVENTIONS = "CF-1.10"
 
@@ -194,6 +197,8 @@ def frame(dataset: xr.Dataset, row: str) -> pd.DataFrame:
     variables along a harmonic dimension stay in the dataset only.  The
     units of each column are in ``frame.attrs["units"]``.
     """
+    import pandas as pd
+
     columns: dict = {}
     units: dict = {}
     for name, array in list(dataset.coords.items()) + list(dataset.data_vars.items()):
@@ -224,3 +229,39 @@ def write_csv(table: pd.DataFrame, path) -> Path:
     path = Path(path)
     table.to_csv(path, index=False)
     return path
+
+
+class Exports:
+    """``to_dataframe``, ``to_netcdf`` and ``to_csv`` from the class's ``to_xarray``.
+
+    A result or study defines ``to_xarray`` and sets ``_table_row``, the
+    dimension whose entries are the table's rows ("time", "multiplier"); a
+    study leaves it None: a row per entry of the dimension of its
+    ``converged`` (the swept field, member, point or draw).  Each method
+    passes its remaining arguments on to ``to_xarray``.
+    """
+
+    _table_row: str | None = None
+
+    def to_dataframe(self, *args, **kwargs) -> pd.DataFrame:
+        """`to_xarray` as a `pandas.DataFrame`: a row per instant (member, point, draw, multiplier).
+
+        A column per output and place (`railtrack.solvers.export.frame`); the
+        arguments are those of ``to_xarray``.
+        """
+        dataset = self.to_xarray(*args, **kwargs)
+        return frame(dataset, self._table_row or dataset["converged"].dims[0])
+
+    def to_netcdf(self, path, *args, **kwargs) -> Path:
+        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path.
+
+        The arguments after `path` are those of ``to_xarray``.
+        """
+        return write_netcdf(self.to_xarray(*args, **kwargs), path)
+
+    def to_csv(self, path, *args, **kwargs) -> Path:
+        """Write `to_dataframe` to a CSV file at `path`; the path.
+
+        The arguments after `path` are those of ``to_xarray``.
+        """
+        return write_csv(self.to_dataframe(*args, **kwargs), path)

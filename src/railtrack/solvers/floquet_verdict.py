@@ -19,34 +19,7 @@ whatever the box.  Finding none proves it stable only if nothing can hide:
 
 Otherwise the verdict is "unknown", and `Floquet.stable` is None.
 
-The bound, and what it rests on.  Linearised about the orbit, the track is
-the rail and pads (constant, passive) and, under each sleeper of mass m_s,
-the foundation's tangent stiffness k(t) and damping d(t).  With any shift
-kappa that makes k~ = k + kappa > 0, the energy E_s = 1/2 m_s w'^2 +
-1/2 k~ w^2 of one sleeper on its foundation alone obeys
-
-    dE_s/dt <= [ (k~'/k~)_+ + 2 max(-d, 0) / m_s + kappa / sqrt(m_s min k~) ] E_s,
-
-since a positive d dissipates, 1/2 k~' w^2 <= (k~'/k~)_+ 1/2 k~ w^2 and
-|kappa w w'| <= kappa E_s / sqrt(m_s min k~), so its amplitude grows per
-period T by at most
-
-    log |mu| <= 1/2 (upward variation of log k~ over T)
-                + int_0^T max(-d, 0) / m_s dt + T kappa / (2 sqrt(m_s min k~)).
-
-This is a proof for a sleeper that the rail leaves alone, not for the
-coupled track: the passive rail and pads move energy between sleepers that
-sit at different points of their cycle, and the bound that survives that
-exchange (over a wagon's window of sleepers, the largest of their rates at
-each instant) is e^16 to e^40 on chapter 10's fold branch, above any useful
-box.  So `growth_bound` is an estimate of how large a multiplier can be,
-exact in the limit of a soft rail; on the fold branch it lies above the
-ring's |mu| (3 to 6,400 against at most 2.7, tests/test_floquet_verdicts.py),
-and the default box (1e6) stays far above it.  A verdict of "stable" thus
-says: no multiplier up to max_multiplier, and max_multiplier well above what
-this estimate allows.  For a cell the estimate is the largest over its
-sleepers.  A kinked law (bilinear, gap) gives finite jumps of log k~, so it
-stays finite.  Several shifts are tried and the least kept.
+The estimate and what it rests on: `railtrack.solvers.floquet_bound`.
 """
 
 from __future__ import annotations
@@ -55,7 +28,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "NEUTRAL", "BOUND_MARGIN", "growth_bound", "search_verdict"]
+from .export import Exports
+from .floquet_bound import growth_bound
+from .result_repr import ShortRepr, floquet_rows
+
+__all__ = ["Floquet", "VERDICTS", "MIN_POINTS", "NEUTRAL", "BOUND_MARGIN", "growth_bound",
+           "search_verdict"]     # growth_bound lives in floquet_bound: imported from here too
 
 VERDICTS = ("stable", "unstable", "unknown")
 MIN_POINTS = 16
@@ -68,14 +46,10 @@ them from m = omega_pp / Omega up (on the fold track at 420 m/s, m = 61, where
 |mu| - 1 = 3e-14), while one sleeper's condensed matrix cannot see them."""
 BOUND_MARGIN = 2.0
 """The box must reach this many times above the a-priori estimate of |mu| (`growth_bound`) [-]."""
-BOUND_SAMPLES = 4096
-"""Samples of the orbit over one period for the bound (its sampled variation of log k~)."""
-SHIFT_FRACTIONS = (1e-3, 1e-2, 1e-1, 1.0)
-"""Shifts kappa tried, above -min k, as fractions of the range of k (and kappa = 0 if min k > 0)."""
 
 
-@dataclass(frozen=True, eq=False)
-class Floquet:
+@dataclass(frozen=True, eq=False, repr=False)
+class Floquet(ShortRepr, Exports):
     """The Floquet multipliers of a periodic solution (`railtrack.floquet`).
 
     Attributes
@@ -165,99 +139,13 @@ class Floquet:
             raise ValueError(f"verdict must be one of {VERDICTS}; got {self.verdict!r}")
         object.__setattr__(self, "stable", {"stable": True, "unstable": False}.get(self.verdict))
 
-    def __repr__(self) -> str:
-        from .result_repr import result_repr
-        return result_repr(self)
-
-    def _repr_html_(self) -> str:
-        from .result_repr import result_html
-        return result_html(self)
+    _rows = floquet_rows                # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "multiplier"           # to_dataframe: a row per multiplier
 
     def to_xarray(self):
         """The multipliers as an `xarray.Dataset` (CF units; `railtrack.solvers.floquet_export`)."""
         from .floquet_export import floquet_dataset
         return floquet_dataset(self)
-
-    def to_dataframe(self):
-        """`to_xarray` as a `pandas.DataFrame`: one row per multiplier."""
-        from .export import frame
-        return frame(self.to_xarray(), "multiplier")
-
-    def to_netcdf(self, path):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from .export import write_netcdf
-        return write_netcdf(self.to_xarray(), path)
-
-    def to_csv(self, path):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from .export import write_csv
-        return write_csv(self.to_dataframe(), path)
-
-
-def growth_bound(solution) -> float:
-    """An estimate of the largest |mu| per period T = H / v any disturbance of `solution` can have [-].
-
-    From the energy of the linearised track (module docstring); inf if the
-    foundation's tangent along the orbit is not finite.  An estimate: a proof
-    for a sleeper the rail leaves alone (module docstring).  For a
-    `CellSolution`, the largest of its sleepers' estimates.
-
-    Examples
-    --------
-    >>> import railtrack as rt
-    >>> s = rt.solve(rt.Track.paper(), rt.Train.paper(), rt.LinearFoundation.paper())
-    >>> growth_bound(s)      # constant k, positive d: no disturbance grows
-    1.0
-    """
-    period, m = float(solution.period), int(solution.harmonics)
-    samples = max(BOUND_SAMPLES, 16 * m)
-    cell = getattr(solution, "cell", None)
-    rows = np.atleast_2d(solution.coefficients)[:, m:]
-    laws = [solution.foundation] if cell is None else list(cell.foundations)
-    masses = np.broadcast_to(np.asarray(
-        solution.passage.sleeper_mass if cell is None else cell.sleeper_mass, float), len(laws))
-    omega = np.asarray(solution.frequencies, dtype=float)[-(m + 1):]
-    increments = []
-    for c, law, mass in zip(rows, laws, masses):
-        # w and w' over one period at t_j = j T / N, by an inverse FFT of c_0..c_m
-        spectrum = np.zeros(samples // 2 + 1, dtype=complex)
-        spectrum[: m + 1] = c
-        w = np.fft.irfft(spectrum, samples) * samples
-        spectrum[: m + 1] *= 1j * omega
-        v = np.fft.irfft(spectrum, samples) * samples
-        stiffness, damping = (np.broadcast_to(np.asarray(part, dtype=float), w.shape)
-                              for part in law.tangent(w, v))
-        if not (np.all(np.isfinite(stiffness)) and np.all(np.isfinite(damping))):
-            return float("inf")
-        increments.append(_least_increments(stiffness, damping, float(mass), period))
-    if any(part is None for part in increments):
-        return float("inf")
-    return float(np.exp(max(float(np.sum(part)) for part in increments)))
-
-
-def _least_increments(stiffness: np.ndarray, damping: np.ndarray, mass: float,
-                      period: float) -> np.ndarray | None:
-    """Per sample, the growth of log E / 2 over the shift kappa with the least total.
-
-    1/2 (rise of log k~)_+ + max(-d, 0) dt / m_s + dt kappa / (2 sqrt(m_s min k~)),
-    whose sum over the period is log of the bound (module docstring).
-    """
-    dt = period / stiffness.size
-    low, high = float(stiffness.min()), float(stiffness.max())
-    shifts = [0.0] if low > 0 else []
-    spread = max(high - low, abs(high), np.finfo(float).tiny)
-    shifts += [max(-low, 0.0) + f * spread for f in SHIFT_FRACTIONS]
-    best, chosen = float("inf"), None
-    for kappa in shifts:
-        shifted = stiffness + kappa
-        if shifted.min() <= 0:
-            continue
-        log_k = np.log(np.append(shifted, shifted[0]))
-        steps = (0.5 * np.maximum(np.diff(log_k), 0.0) + np.maximum(-damping, 0.0) * dt / mass
-                 + 0.5 * dt * kappa / np.sqrt(mass * shifted.min()))
-        if steps.sum() < best:
-            best, chosen = float(steps.sum()), steps
-    return chosen
 
 
 def neutral_note(dominant: complex) -> str:

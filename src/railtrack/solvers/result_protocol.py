@@ -56,7 +56,7 @@ from .cell_static import AtRest, cell_at_rest
 __all__ = ["SteadyStateResult", "PER_SLEEPER", "PER_WHEEL", "ALONG_RAIL", "SHARED_METHODS",
            "SHARED_ATTRIBUTES", "period_samples", "period_times", "one_period",
            "wheel_positions", "moving_contact_force", "rail_under_wheels", "contact_fraction",
-           "single_at_rest"]
+           "single_at_rest", "SharedOutputs"]
 
 PER_SLEEPER = ("sleeper_displacement", "sleeper_velocity", "rail_above_sleepers",
                "rail_seat_load", "foundation_force")
@@ -169,3 +169,45 @@ def single_at_rest(passage: Passage, foundation) -> AtRest:
     """
     rest = cell_at_rest(passage, SleeperCell.identical(passage, foundation, 1))
     return AtRest(*(float(np.asarray(a)[0]) for a in rest[:3]), rest.converged)
+
+
+class SharedOutputs:
+    """The protocol's methods that every result computes alike from its other outputs.
+
+    `one_period`, `wheel_position`, `rail_under_wheels` and `contact_fraction`
+    read the class's `period`, `sleeper_displacement`, `rail_displacement` and
+    `foundation_force`; `contact_force` is that of loads moving at constant
+    force (`Solution`, `CellSolution`): a `WheelSolution` gives its own.
+    """
+
+    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(t, w): `samples` times over [0, T) [s], (samples,), and w there, sleeper_shape + (samples,) [m].
+
+        max(400, 4 m) samples by default (module docstring); ``one_period(n)[0]``
+        are the times alone, e.g. for `contact_force`.
+        """
+        return one_period(self, samples)
+
+    def wheel_position(self, t: ArrayLike) -> np.ndarray:
+        """x_k(t) = v t - d_k [m], wheel k's distance past sleeper 0 (the observed one); (K,) + t.shape.
+
+        Take it modulo the wagon length H to read it within one wagon, where
+        the track and the loads repeat.
+        """
+        return wheel_positions(self.passage, t)
+
+    def contact_force(self, t: ArrayLike) -> np.ndarray:
+        """Q_k at every t [N], (K,) + t.shape: the loads move at constant force."""
+        return moving_contact_force(self.passage, t)
+
+    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
+        """The rail at each wheel's contact point, ``rail_displacement(t, x_k(t))`` [m].
+
+        Shape (K,) + t.shape: axle k in the order of ``train.axle_positions``
+        (wheels first, time last).
+        """
+        return rail_under_wheels(self, t)
+
+    def contact_fraction(self, samples: int = 2048) -> np.ndarray:
+        """Share of the period in which each sleeper presses on its foundation (force > 0) [-]."""
+        return contact_fraction(self, samples)

@@ -26,7 +26,7 @@ from ..equations.rail_field import seat_load_coefficients
 from .result_protocol import period_samples
 
 __all__ = ["render_text", "render_html", "solution_rows", "cell_rows", "wheel_rows",
-           "floquet_rows", "result_repr", "result_html", "case_text", "law_text",
+           "floquet_rows", "result_repr", "result_html", "ShortRepr", "case_text", "law_text",
            "extent", "quantity", "rows_of",
            "safe", "MM", "KN"]
 
@@ -221,26 +221,41 @@ def floquet_rows(f) -> tuple[str, Rows]:
     return f"Floquet: {f.verdict}" + (" (continued)" if f.continued else ""), rows
 
 
-ROWS = {"Solution": solution_rows, "CellSolution": cell_rows, "WheelSolution": wheel_rows,
-        "Floquet": floquet_rows}
+def rows_of(result) -> tuple[str, Rows]:
+    """The rows of `result` by its class's ``_rows``, or a line saying why they could not be built.
 
-
-def rows_of(result, table: dict) -> tuple[str, Rows]:
-    """`table`'s rows of `result`, or a line saying why they could not be built: never raises."""
+    Never raises: a repr must not hide the object.
+    """
     try:
         with np.errstate(all="ignore"), warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            return table[type(result).__name__](result)
+            return type(result)._rows(result)
     except Exception as error:      # noqa: BLE001 - a repr must not hide the object
         return type(result).__name__, [("repr", f"not available ({type(error).__name__}: "
                                                 f"{str(error)[:60]})")]
 
 
 def result_repr(result) -> str:
-    """The short text repr of a Solution, CellSolution, WheelSolution or Floquet."""
-    return render_text(*rows_of(result, ROWS))
+    """The short text repr of a result or study (a `ShortRepr`)."""
+    return render_text(*rows_of(result))
 
 
 def result_html(result) -> str:
-    """The HTML table of a Solution, CellSolution, WheelSolution or Floquet."""
-    return render_html(*rows_of(result, ROWS))
+    """The HTML table of a result or study (a `ShortRepr`)."""
+    return render_html(*rows_of(result))
+
+
+class ShortRepr:
+    """``__repr__`` and ``_repr_html_`` from the class's ``_rows``, a function of an instance.
+
+    ``_rows(result)`` gives the title and the ``(name, value)`` rows
+    (`solution_rows`, ..., `railtrack.studies.study_repr.sweep_rows`,
+    `railtrack.timedomain.td_repr.time_domain_rows`).  A dataclass that
+    inherits this says ``repr=False``, or its generated repr would win.
+    """
+
+    def __repr__(self) -> str:
+        return result_repr(self)
+
+    def _repr_html_(self) -> str:
+        return result_html(self)

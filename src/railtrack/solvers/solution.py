@@ -17,32 +17,26 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ..equations.rail_field import rail_field_coefficients, seat_load_coefficients
+from ..equations.rail_field import seat_load_coefficients
 from ..equations.sleeper import rail_coefficients
 from ..model.passage import Passage
 from ..equations.bowl import DeflectionBowl, deflection_bowl
 from ..equations.load import load_coefficients
-from ..equations.moment import kink_coefficients, kink_sum
-from ..equations.positions import checked_times
+from ..equations.moment import kink_sum
 from .convergence import ConvergenceError, ConvergenceWarning, TruncationWarning
 from .output_errors import output_truncation_errors
-from .result_repr import result_html, result_repr
-from .result_protocol import (contact_fraction, moving_contact_force, one_period,
-                              rail_under_wheels, single_at_rest, wheel_positions)
+from .result_protocol import SharedOutputs, single_at_rest
+from .time_histories import fourier_series, rail_field_series
+from .design_figures import DesignFigures
+from .export import Exports
+from .result_repr import ShortRepr, solution_rows
 
 __all__ = ["Solution", "ConvergenceError", "ConvergenceWarning", "TruncationWarning", "DeflectionBowl",
-           "fourier_series"]
+           "fourier_series"]     # fourier_series lives in time_histories: imported from here too
 
 
-def fourier_series(coefficients: np.ndarray, omega: np.ndarray, t: ArrayLike) -> np.ndarray:
-    """Real sum_n c_n exp(i omega_n t) over a two-sided set, eq. (12), for any shape of t."""
-    t = checked_times(omega, t)
-    phases = np.exp(1j * np.multiply.outer(t, omega))
-    return (phases @ coefficients).real
-
-
-@dataclass(frozen=True, eq=False)
-class Solution:
+@dataclass(frozen=True, eq=False, repr=False)
+class Solution(SharedOutputs, ShortRepr, DesignFigures, Exports):
     """Periodic steady response of the sleeper (eq. 12) found by `railtrack.solve`.
 
     Attributes
@@ -168,7 +162,7 @@ class Solution:
         if np.all(np.asarray(x) == 0.0):
             values = fourier_series(self.rail_coefficients(), self.frequencies, t)
             return values + np.zeros(np.shape(x))
-        return self._rail_field(t, x, 0)
+        return rail_field_series(self, t, x, 0)
 
     def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
                             kinks: str = "closed form") -> np.ndarray:
@@ -191,9 +185,9 @@ class Solution:
         """
         ei = self.passage.rail_bending_stiffness
         if kinks == "closed form":
-            return ei * self._rail_field(t, x, 1) + kink_sum(self.passage, t, x)
+            return ei * rail_field_series(self, t, x, 1) + kink_sum(self.passage, t, x)
         if kinks == "series":
-            return ei * self._rail_field(t, x, 2)
+            return ei * rail_field_series(self, t, x, 2)
         raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
 
     def truncation_errors(self, x: float = 0.0) -> dict[str, float]:
@@ -234,23 +228,6 @@ class Solution:
         return fourier_series(
             seat_load_coefficients(self.passage, omega, self.coefficients), omega, t)
 
-    def _rail_field(self, t: ArrayLike, x: ArrayLike, which: int) -> np.ndarray:
-        """Re sum_n r_n(x) e^{i omega_n t}: displacement (0), curvature less its kinks (1), curvature (2)."""
-        t = checked_times(self.frequencies, t)
-        t, x = np.broadcast_arrays(t, np.asarray(x, dtype=float))
-        xs, x_index = np.unique(x, return_inverse=True)
-        ts, t_index = np.unique(t, return_inverse=True)
-        omega = self.frequencies
-        coefficients = rail_field_coefficients(self.passage, omega, self.coefficients, xs)[min(which, 1)]
-        if which == 1:
-            ei = self.passage.rail_bending_stiffness
-            coefficients = coefficients - kink_coefficients(self.passage, omega, xs) / ei
-        if ts.size * xs.size <= 4 * max(t.size, 1):   # a grid: one matrix product
-            table = (np.exp(1j * np.multiply.outer(ts, omega)) @ coefficients.T).real
-            return table[t_index.reshape(t.shape), x_index.reshape(x.shape)]
-        phases = np.exp(1j * np.multiply.outer(t, omega))
-        return np.einsum("...n,...n->...", coefficients[x_index.reshape(x.shape)], phases).real
-
     def foundation_force(self, t: ArrayLike) -> np.ndarray:
         """Force that the sleeper puts on the foundation, positive in compression [N].
 
@@ -264,30 +241,12 @@ class Solution:
             dtype=float,
         )
 
-    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
-        """Rail displacement at the contact point of each axle of a wagon [m].
-
-        Axle k (offset d_k behind the wagon's first axle) is at x = v t - d_k
-        at time t, so this is ``rail_displacement(t, v t - d_k)``.
-
-        Returns
-        -------
-        ndarray, shape (K,) + t.shape
-            [k, ...] under axle k, in the order of ``train.axle_positions``
-            (wheels first, time last, as every result: `result_protocol`).
-        """
-        return rail_under_wheels(self, t)
-
     def deflection_bowl(self, t: ArrayLike, x: ArrayLike) -> DeflectionBowl:
         """The rail and the sleepers along the track at one instant, or at several [m].
 
         See `railtrack.equations.bowl.deflection_bowl`, which this calls.
         """
         return deflection_bowl(self, t, x)
-
-    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """(t, w): `samples` times over [0, T) [s] and w there [m]; max(400, 4 m) by default."""
-        return one_period(self, samples)
 
     @property
     def sleeper_shape(self) -> tuple[int, ...]:
@@ -298,36 +257,12 @@ class Solution:
         """The rail above the sleeper, ``rail_displacement(t, 0)`` [m], shape of t."""
         return self.rail_displacement(t, 0.0)
 
-    def wheel_position(self, t: ArrayLike) -> np.ndarray:
-        """x_k(t) = v t - d_k [m], wheel k past the observed sleeper; (K,) + t.shape."""
-        return wheel_positions(self.passage, t)
-
-    def contact_force(self, t: ArrayLike) -> np.ndarray:
-        """Q_k at every t [N], (K,) + t.shape: the loads move at constant force."""
-        return moving_contact_force(self.passage, t)
-
-    def contact_fraction(self, samples: int = 2048) -> np.ndarray:
-        """Share of the period with the foundation in compression [-] (`result_protocol`)."""
-        return contact_fraction(self, samples)
-
     def at_rest(self):
         """The sleeper before the train arrives (this model has no self-weight): 0 N, 0 m."""
         return single_at_rest(self.passage, self.foundation)
 
-    def __repr__(self) -> str:
-        return result_repr(self)
-
-    def _repr_html_(self) -> str:
-        return result_html(self)
-
-    def summary(self, **options):
-        """Design figures in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
-
-        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
-        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
-        """
-        from .design_figures import design_summary
-        return design_summary(self, **options)
+    _rows = solution_rows               # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "time"                 # to_dataframe: a row per instant
 
     def to_xarray(self, samples: int = 400, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).
@@ -338,17 +273,3 @@ class Solution:
         from .result_export import solution_dataset
         return solution_dataset(self, samples, x)
 
-    def to_dataframe(self, samples: int = 400, x=None):
-        """`to_xarray` as a `pandas.DataFrame`: a row per instant, a column per output and place."""
-        from .export import frame
-        return frame(self.to_xarray(samples, x), "time")
-
-    def to_netcdf(self, path, samples: int = 400, x=None):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from .export import write_netcdf
-        return write_netcdf(self.to_xarray(samples, x), path)
-
-    def to_csv(self, path, samples: int = 400, x=None):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from .export import write_csv
-        return write_csv(self.to_dataframe(samples, x), path)

@@ -22,19 +22,21 @@ from numpy.typing import ArrayLike
 
 from ..equations.moment import kink_sum
 from ..equations.positions import check_positions, checked_times
-from ..equations.wheel_train_receptance import wheel_train_receptance
 from ..model.passage import Passage
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
-from .result_repr import result_html, result_repr
 from .wheel_extremes import anchor_sag, extremes, loss_of_contact
-from .result_protocol import one_period, rail_under_wheels, wheel_positions
+from .wheel_free_rail import free_rail
+from .result_protocol import SharedOutputs
+from .design_figures import DesignFigures
+from .export import Exports
+from .result_repr import ShortRepr, wheel_rows
 
 __all__ = ["WheelSolution"]
 
 
-@dataclass(frozen=True)
-class WheelSolution:
+@dataclass(frozen=True, repr=False)
+class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
     """Wheels, rail and sleepers in the steady state; ``converged`` only if the residual <= tol.
 
     Attributes
@@ -119,14 +121,6 @@ class WheelSolution:
             out[:, start:start + step] = 2 * (harmonics @ phases.T).real
         return out.reshape((harmonics.shape[0],) + t.shape)
 
-    def wheel_position(self, t: ArrayLike) -> np.ndarray:
-        """x_k(t) = v t - d_k [m], wheel k's distance from sleeper 0; shape (K,) + t.shape.
-
-        Take it modulo the wagon length H to read it within one wagon, where
-        the profile and the cell repeat.
-        """
-        return wheel_positions(self.passage, t)
-
     def compression(self, t: ArrayLike) -> np.ndarray:
         """delta_k(t) [m], shape (K,) + t.shape; the wheel is off the rail where < 0."""
         mean = (self.lift + self.profile_harmonics[:, 0].real).reshape((-1,) + (1,) * np.ndim(t))
@@ -168,33 +162,6 @@ class WheelSolution:
         """The static sag at sleeper 0 of the wheels' uneven mean load [m] (`anchor_sag`)."""
         return anchor_sag(self)
 
-    def _free_rail(self, t: ArrayLike, x: ArrayLike, derivative: int) -> np.ndarray:
-        """The free rail under the wheels' varying forces, eq. (13.2) at (t, x) [m or 1/m].
-
-        The points are taken in blocks (`chunk_length`), every wheel's offset
-        at once, so that memory stays bounded and each harmonic's roots are
-        found once per block.
-        """
-        t = checked_times(2 * np.pi * self.grid / self.period, t)
-        t, x = np.broadcast_arrays(t, np.asarray(x, dtype=float))
-        flat_t, flat_x = t.ravel(), x.ravel()
-        out = np.zeros(flat_t.size)
-        omega = 2 * np.pi * self.grid / self.period
-        speed = float(self.passage.speed)
-        axles = np.asarray(self.passage.axle_positions, dtype=float)[:, None]
-        step = chunk_length(axles.size)
-        for start in range(0, flat_t.size, step):
-            part = slice(start, start + step)
-            offset = flat_x[part] - speed * flat_t[part] + axles                 # (K, P)
-            # points that move with the train share their offsets: each once
-            offsets, where = np.unique(offset, return_inverse=True)
-            for force, w in zip(self.contact_harmonics.T, omega):
-                shape = wheel_train_receptance(self.passage, float(w), offsets,
-                                               derivative)[where.reshape(offset.shape)]
-                # P presses down
-                out[part] -= 2 * (np.exp(1j * w * flat_t[part]) * (force @ shape)).real
-        return out.reshape(t.shape)
-
     def _check_positions(self, x: ArrayLike) -> None:
         """Refuse x whose phases round-off swamps, for the sleepers' and the wheels' harmonics."""
         top = max(float(self.sleepers.frequencies.max()),
@@ -211,7 +178,7 @@ class WheelSolution:
         `railtrack.CellSolution.rail_displacement` (too far or not finite: ValueError).
         """
         self._check_positions(x)
-        return (self.sleepers._field(t, x, 0) + self._free_rail(t, x, 0)
+        return (self.sleepers._field(t, x, 0) + free_rail(self, t, x, 0)
                 - self._anchor_sag)
 
     def rail_bending_moment(self, t: ArrayLike, x: ArrayLike = 0.0, *,
@@ -230,7 +197,7 @@ class WheelSolution:
             static = ei * self.sleepers._field(t, x, 2)
         else:
             raise ValueError(f'kinks must be "closed form" or "series"; got {kinks!r}')
-        return static + ei * self._free_rail(t, x, 2)
+        return static + ei * free_rail(self, t, x, 2)
 
     def rail_seat_load(self, t: ArrayLike) -> np.ndarray:
         """Each sleeper's rail-seat load [N], (N,) + t.shape, positive in compression."""
@@ -252,14 +219,6 @@ class WheelSolution:
     def loss_of_contact(self, samples: int = 8192) -> tuple[np.ndarray, np.ndarray]:
         """Per wheel: the share of the period off the rail, and the longest spell off it [s]."""
         return loss_of_contact(self, samples)
-
-    def one_period(self, samples: int | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """(t, w): times over [0, T) [s] and every sleeper's w there, (N, samples) [m].
-
-        max(400, 4 m) samples by default (`railtrack.solvers.result_protocol`);
-        ``one_period(n)[0]`` are the times alone, e.g. for `contact_force`.
-        """
-        return one_period(self, samples)
 
     @property
     def frequencies(self) -> np.ndarray:
@@ -288,10 +247,6 @@ class WheelSolution:
         """The rail above each sleeper (through its pad) [m], (N,) + t.shape."""
         return self.sleepers.rail_above_sleepers(t)
 
-    def rail_under_wheels(self, t: ArrayLike) -> np.ndarray:
-        """The rail at each wheel's contact point [m], (K,) + t.shape."""
-        return rail_under_wheels(self, t)
-
     def contact_fraction(self, samples: int = 2048) -> np.ndarray:
         """Share of the period in which each sleeper presses on its foundation [-]."""
         return self.sleepers.contact_fraction(samples)
@@ -300,20 +255,8 @@ class WheelSolution:
         """The track under its own weight before the train arrives (`CellSolution.at_rest`)."""
         return self.sleepers.at_rest()
 
-    def __repr__(self) -> str:
-        return result_repr(self)
-
-    def _repr_html_(self) -> str:
-        return result_html(self)
-
-    def summary(self, **options):
-        """Design figures; max P / Q beside Eisenmann's factor in kN, kPa, kN m, MPa (`railtrack.solvers.design_figures`).
-
-        Options: ``section`` (UIC60), ``bearing_area`` [m^2] for the ballast pressure,
-        ``track_quality`` and ``certainty`` (Eisenmann's s and t).
-        """
-        from .design_figures import design_summary
-        return design_summary(self, **options)
+    _rows = wheel_rows                  # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "time"                 # to_dataframe: a row per instant
 
     def to_xarray(self, samples: int = 400, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).
@@ -324,17 +267,3 @@ class WheelSolution:
         from .result_export import wheel_dataset
         return wheel_dataset(self, samples, x)
 
-    def to_dataframe(self, samples: int = 400, x=None):
-        """`to_xarray` as a `pandas.DataFrame`: a row per instant, a column per output and place."""
-        from .export import frame
-        return frame(self.to_xarray(samples, x), "time")
-
-    def to_netcdf(self, path, samples: int = 400, x=None):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from .export import write_netcdf
-        return write_netcdf(self.to_xarray(samples, x), path)
-
-    def to_csv(self, path, samples: int = 400, x=None):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from .export import write_csv
-        return write_csv(self.to_dataframe(samples, x), path)

@@ -10,8 +10,7 @@ the branch without storing a few hundred solutions.
 
 from __future__ import annotations
 
-import dataclasses
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -22,61 +21,15 @@ from ..solvers.solution import Solution
 from ..model.track import Track
 from ..model.train import Train
 from ..solvers.truncation import truncation_error
-from .study_repr import study_html, study_repr
+from ..solvers.export import Exports
+from ..solvers.result_repr import ShortRepr
+# the parameter's helpers, re-exported: continuation and branch_stability import them from here
+from .branch_parameter import (TRACK_FIELDS, TRAIN_FIELDS, check_parameter, hermite_turning_value,
+                               replaced, scalar)
+from .study_repr import branch_rows
 
 __all__ = ["Branch", "Fold", "StabilityChange", "TRACK_FIELDS", "TRAIN_FIELDS", "replaced", "check_parameter",
            "scalar", "hermite_turning_value"]
-
-TRACK_FIELDS = ("rail_linear_mass", "rail_bending_stiffness", "sleeper_mass",
-                "sleeper_spacing", "pad_stiffness", "pad_damping")
-TRAIN_FIELDS = ("wagon_length", "speed")
-"""The scalar fields of `Train`; axle_positions and axle_loads are tuples."""
-
-
-def replaced(track: Track, train: Train, foundation: Any, parameter: str,
-             value: float) -> tuple[Track, Train, Any]:
-    """(track, train, foundation) with the field named `parameter` set to `value`.
-
-    The owner of the field is found by name: the track, then the train,
-    then the foundation (a frozen dataclass, changed with
-    `dataclasses.replace`, which validates it again).
-    """
-    if parameter in TRACK_FIELDS:
-        return track.replace(**{parameter: value}), train, foundation
-    if parameter in TRAIN_FIELDS:
-        return track, train.replace(**{parameter: value}), foundation
-    return track, train, replace(foundation, **{parameter: value})
-
-
-def check_parameter(track, train, foundation, parameter) -> None:
-    """Raise a ValueError naming `parameter` unless it is a scalar field of the problem."""
-    names = list(TRACK_FIELDS) + list(TRAIN_FIELDS)
-    if dataclasses.is_dataclass(foundation):
-        names += [f.name for f in dataclasses.fields(foundation)
-                  if isinstance(getattr(foundation, f.name), (int, float, np.floating))]
-    if parameter not in names:
-        raise ValueError(f"parameter {parameter!r} is not a scalar field of the Track, the Train "
-                         f"or the foundation; choose one of {names}")
-
-
-def scalar(name: str, parameter: str, value) -> float:
-    """`value` as a float, or a ValueError naming `name` and `parameter`."""
-    if isinstance(value, bool) or np.ndim(value) != 0 or np.asarray(value).dtype.kind not in "iuf":
-        raise ValueError(f"{name} (the value of {parameter!r}) must be a real scalar; got {value!r}")
-    if not np.isfinite(value):
-        raise ValueError(f"{name} (the value of {parameter!r}) must be finite; got {value!r}")
-    return float(value)
-
-
-def hermite_turning_value(p0, p1, d0, d1, length):
-    """Turning value of the cubic Hermite p(s) = p0 + d0 s + a s^2 + b s^3 on [0, length]."""
-    a = 3 * (p1 - p0) / length ** 2 - (2 * d0 + d1) / length
-    b = (d0 + d1) / length ** 2 - 2 * (p1 - p0) / length ** 3
-    roots = np.roots([3 * b, 2 * a, d0])
-    roots = roots[np.isreal(roots)].real
-    inside = roots[(roots >= 0) & (roots <= length)]
-    s = inside[0] if len(inside) else length * d0 / (d0 - d1)
-    return p0 + s * (d0 + s * (a + s * b))
 
 
 @dataclass(frozen=True)
@@ -130,8 +83,8 @@ class StabilityChange:
     gains: bool
 
 
-@dataclass(frozen=True, eq=False)
-class Branch:
+@dataclass(frozen=True, eq=False, repr=False)
+class Branch(ShortRepr, Exports):
     """Solutions of eq. (17) along a curve in one scalar parameter.
 
     Attributes
@@ -290,11 +243,8 @@ class Branch:
         rows = [(1 - w) * c[i] + w * c[j] for i, j, w in zip(before, after, weight)]
         return np.array(rows).reshape(-1, self.harmonics + 1)
 
-    def __repr__(self) -> str:
-        return study_repr(self)
-
-    def _repr_html_(self) -> str:
-        return study_html(self)
+    _rows = branch_rows                 # __repr__, _repr_html_ (ShortRepr)
+    _table_row = None                   # to_dataframe: a row per point, converged's dimension
 
     def to_xarray(self, samples: int = 512):
         """Every point as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`).
@@ -304,17 +254,3 @@ class Branch:
         from .study_export import branch_dataset
         return branch_dataset(self, samples)
 
-    def to_dataframe(self, samples: int = 512):
-        """`to_xarray` as a `pandas.DataFrame`: one row per point."""
-        from .study_export import study_frame
-        return study_frame(self.to_xarray(samples))
-
-    def to_netcdf(self, path, samples: int = 512):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from ..solvers.export import write_netcdf
-        return write_netcdf(self.to_xarray(samples), path)
-
-    def to_csv(self, path, samples: int = 512):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from ..solvers.export import write_csv
-        return write_csv(self.to_dataframe(samples), path)

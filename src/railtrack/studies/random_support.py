@@ -36,24 +36,25 @@ and a progress bar (``tqdm``) is shown for large studies.
 
 from __future__ import annotations
 
-import dataclasses
 import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..model.cell import SleeperCell, cell_size
-from ..model.foundations import LinearFoundation, as_foundation
+from ..model.foundations import LinearFoundation
 from ..model.passage import Passage
 from ..model.validation import require_non_negative
 from ..solvers.arguments import require_count
 from ..solvers.auto_harmonics import DEFAULT_ACCURACY, WARN_TRUNCATION
-from ..solvers.cell_auto import solve_track_cell
 from ..solvers.chunk_map import chunk_bounds, map_chunks, show_progress
 from ..solvers.solution import TruncationWarning
-from ..solvers.stability_hint import UnstableSolutionWarning, cell_verdict
-from .random_support_batch import POINTS_PER_SPAN, TIMES, linear_draws
-from .study_repr import study_html, study_repr
+from ..solvers.stability_hint import UnstableSolutionWarning
+from .random_draws import draw_cell, draw_chunk, lognormal_factors, scaled_law
+from .random_support_batch import linear_draws
+from ..solvers.export import Exports
+from ..solvers.result_repr import ShortRepr
+from .study_repr import random_support_rows
 
 __all__ = ["RandomSupport", "random_support", "scaled_law", "lognormal_factors"]
 
@@ -61,37 +62,8 @@ PROGRESS_DRAWS = 500
 """With ``progress=None`` the bar is shown from this many draws (tens of seconds)."""
 
 
-def lognormal_factors(variation: float, shape, rng: np.random.Generator) -> np.ndarray:
-    """Lognormal factors of mean 1 and coefficient of variation `variation` [-]."""
-    if not 0.0 <= variation < 10.0:
-        raise ValueError(f"variation (coefficient of variation) must be in [0, 10); "
-                         f"got {variation!r}")
-    sigma = np.sqrt(np.log1p(variation**2))
-    return rng.lognormal(-0.5 * sigma**2, sigma, size=shape)
-
-
-def scaled_law(law, factor: float):
-    """`law` with every field whose name contains "stiffness" multiplied by `factor`.
-
-    Examples
-    --------
-    >>> from railtrack.model.foundations import CubicFoundation
-    >>> scaled_law(CubicFoundation(20e6, 2e13, 0.8, 2e5), 0.5).stiffness
-    10000000.0
-    """
-    law = as_foundation(law)
-    if not dataclasses.is_dataclass(law):
-        raise TypeError(f"random_support scales a law's stiffness fields; a "
-                        f"{type(law).__name__} has none (use a package law)")
-    changes = {f.name: getattr(law, f.name) * factor for f in dataclasses.fields(law)
-               if "stiffness" in f.name}
-    if not changes:
-        raise TypeError(f"{type(law).__name__} has no field named *stiffness* to scale")
-    return dataclasses.replace(law, **changes)
-
-
-@dataclass(frozen=True)
-class RandomSupport:
+@dataclass(frozen=True, repr=False)
+class RandomSupport(ShortRepr, Exports):
     """Draws of a random-support Monte Carlo.
 
     Attributes
@@ -144,43 +116,13 @@ class RandomSupport:
         return {"peak_seat_load": np.quantile(self.peak_seat_load[ok], q),
                 "peak_moment": np.quantile(self.peak_moment[ok], q)}
 
-    def __repr__(self) -> str:
-        return study_repr(self)
-
-    def _repr_html_(self) -> str:
-        return study_html(self)
+    _rows = random_support_rows         # __repr__, _repr_html_ (ShortRepr)
+    _table_row = None                   # to_dataframe: a row per draw, converged's dimension
 
     def to_xarray(self):
         """Every draw as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""
         from .study_export import random_support_dataset
         return random_support_dataset(self)
-
-    def to_dataframe(self):
-        """`to_xarray` as a `pandas.DataFrame`: one row per draw."""
-        from .study_export import study_frame
-        return study_frame(self.to_xarray())
-
-    def to_netcdf(self, path):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from ..solvers.export import write_netcdf
-        return write_netcdf(self.to_xarray(), path)
-
-    def to_csv(self, path):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from ..solvers.export import write_csv
-        return write_csv(self.to_dataframe(), path)
-
-
-def _peaks(solution) -> tuple[float, float]:
-    passage = solution.passage
-    times = solution.one_period(TIMES)[0]
-    seat = float(solution.rail_seat_load(times).max())
-    span = passage.sleeper_spacing
-    x = np.arange(solution.sleepers * POINTS_PER_SPAN) * span / POINTS_PER_SPAN
-    wheels = np.asarray(passage.axle_positions, dtype=float)
-    under = (x[:, None] + wheels[None, :]) / float(passage.speed)    # wheel j above x
-    moment = solution.rail_bending_moment(np.mod(under, solution.period), x[:, None])
-    return seat, float(moment.max())
 
 
 def random_support(track, train, foundation, *, sleepers: int = 30, variation: float = 0.3,
@@ -254,13 +196,13 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
         values += (verdicts,)
         # a draw the batch did not converge is solved alone, as `railtrack.solve` would
         for k in np.flatnonzero(~found["converged"]):
-            row = _draw_chunk(track, train, [_draw_cell(base, factors[k])], harmonics,
+            row = draw_chunk(track, train, [draw_cell(base, factors[k])], harmonics,
                               stability)
             for array, value in zip(values, row):
                 array[k] = value[0]
     else:
         bounds = chunk_bounds(draws, 1 if executor is None else 10)
-        parts = map_chunks(_draw_chunk, [(track, train, [_draw_cell(base, row) for row in
+        parts = map_chunks(draw_chunk, [(track, train, [draw_cell(base, row) for row in
                                                           factors[a:b]], harmonics, stability)
                                          for a, b in bounds],
                            [b - a for a, b in bounds], executor=executor, progress=shown,
@@ -278,27 +220,6 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
             "states (RandomSupport.stability): a train does not stay on them, and their peaks "
             f"need not be what the track carries. {result.summary()}"), stacklevel=2)
     return result
-
-
-def _draw_cell(base: SleeperCell, row: np.ndarray) -> SleeperCell:
-    """The cell of one draw: sleeper j on its law's stiffness times X_j."""
-    return dataclasses.replace(
-        base, foundations=tuple(scaled_law(law, x) for law, x in zip(base.foundations, row)))
-
-
-def _draw_chunk(track, train, cells, harmonics, stability: str):
-    """Draws solved one by one (`railtrack.solve` for a cell): their peaks, flags and verdicts."""
-    size = len(cells)
-    seat, moment = np.full(size, np.nan), np.full(size, np.nan)
-    converged, used = np.zeros(size, bool), np.zeros(size, int)
-    verdicts = np.full(size, "unknown", dtype="<U8")
-    for k, cell in enumerate(cells):
-        solution = solve_track_cell(track, train, cell, harmonics, stability="off")
-        converged[k], used[k] = solution.converged, solution.harmonics
-        verdicts[k] = cell_verdict(solution, stability)[0]
-        if solution.converged:
-            seat[k], moment[k] = _peaks(solution)
-    return seat, moment, converged, used, verdicts
 
 
 def _warn_truncation(found: dict, harmonics) -> None:

@@ -15,11 +15,9 @@ from collections import Counter
 import numpy as np
 
 from ..model.passage import Passage
-from ..solvers.result_repr import (KN, MM, case_text, law_text, render_html, render_text,
-                                   quantity, rows_of, safe)
+from ..solvers.result_repr import KN, MM, case_text, law_text, quantity, safe
 
-__all__ = ["sweep_rows", "branch_rows", "random_support_rows", "study_repr", "study_html",
-           "finite_extreme", "verdict_counts"]
+__all__ = ["sweep_rows", "branch_rows", "random_support_rows", "finite_extreme", "verdict_counts"]
 
 
 def finite_extreme(values, along, scale: float, digits: int, pick: str, name: str,
@@ -123,15 +121,3 @@ def _spread(values, scale: float) -> str:
     return (f"mean {finite.mean():.2f}, max {finite.max():.2f} (draw "
             f"{int(np.nanargmax(values))}), min {finite.min():.2f}")
 
-
-ROWS = {"Sweep": sweep_rows, "Branch": branch_rows, "RandomSupport": random_support_rows}
-
-
-def study_repr(study) -> str:
-    """The short text repr of a Sweep, Branch or RandomSupport."""
-    return render_text(*rows_of(study, ROWS))
-
-
-def study_html(study) -> str:
-    """The HTML table of a Sweep, Branch or RandomSupport."""
-    return render_html(*rows_of(study, ROWS))

@@ -29,8 +29,6 @@ from __future__ import annotations
 import dataclasses
 import math
 import warnings
-from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
@@ -42,126 +40,18 @@ from ..model.train import Train
 from ..solvers.arguments import require_count, require_fraction
 from ..solvers.batch import batch_truncation, member
 from ..solvers.chunk_map import chunk_bounds, map_chunks, show_progress
-from ..solvers.solution import ConvergenceWarning, Solution, TruncationWarning
-from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY, WARN_TRUNCATION
+from ..solvers.solve import AUTO_ROUNDS, DEFAULT_ACCURACY
 from ..solvers.truncation import MAX_AUTO_HARMONICS, auto_samples, grown_harmonics
 from .sweep_members import (BLOCK, MAX_RESULT_BYTES, check_members_conditioning, warn_members,
                             polynomial_samples, predicted_harmonics, require_fits, rows,
                             solve_block, split_fields)
 from .sweep_stability import member_stability, require_whole_sleepers, stability_mode
-from .study_repr import study_html, study_repr
+from .sweep_result import Sweep
 
-__all__ = ["Sweep", "sweep", "BLOCK", "MAX_RESULT_BYTES"]
+__all__ = ["Sweep", "sweep", "BLOCK", "MAX_RESULT_BYTES"]     # Sweep lives in sweep_result
 
 PROGRESS_MEMBERS = 50_000
 """A sweep of this many members or more shows its progress unless told otherwise."""
-
-
-@dataclass(frozen=True, eq=False)
-class Sweep:
-    """The members of a `sweep`, in the order of the swept values.
-
-    Attributes
-    ----------
-    values : dict of str to ndarray, shape (B,)
-        The swept field(s) [SI units of the field].
-    harmonics : int
-        m, the same for every member.
-    coefficients : ndarray, shape (B, 2m+1)
-        Two-sided c_n, n = -m..m, of each member [m].
-    converged : ndarray of bool, shape (B,)
-    iterations : ndarray of int, shape (B,)
-    residual : ndarray, shape (B,)
-        Final relative residual of eq. (17) (inf where the law was not finite).
-    truncation_error : ndarray, shape (B,)
-        Estimated truncation error of each member, as `railtrack.Solution`'s
-        (NaN where a member diverged).
-    lowest, highest : ndarray, shape (B,)
-        Extremes of the sleeper displacement over a period [m] (w < 0 is down).
-    seat_load_peak, seat_load_lowest : ndarray, shape (B,)
-        Extremes of the rail-seat load, compression positive [N].
-    foundation_force_peak, foundation_force_lowest : ndarray, shape (B,)
-        Extremes of the force on the foundation, compression positive [N].
-    passage, foundation
-        The batched passage and law (fields of shape (B, 1) where swept).
-    stable : ndarray of object, shape (B,), or None
-        Each member judged as `railtrack.solve` judges a solution
-        (`railtrack.studies.sweep_stability`): True (stable), False
-        (unstable) or None (unknown: not converged, or the look could have
-        missed a multiplier outside the unit circle; the default quick look
-        finds unstable members and proves none stable).  None with
-        ``stability="off"``.  `verdicts` says it in words.
-    dominant_multiplier : ndarray of complex, shape (B,), or None
-        Each member's dominant multiplier mu per period H / v
-        (`railtrack.Floquet.dominant`) [-] where its verdict is known from a
-        Floquet search, else NaN.  None with ``stability="off"``.
-    """
-
-    values: dict
-    harmonics: int
-    coefficients: np.ndarray
-    converged: np.ndarray
-    iterations: np.ndarray
-    residual: np.ndarray
-    truncation_error: np.ndarray
-    lowest: np.ndarray
-    highest: np.ndarray
-    seat_load_peak: np.ndarray
-    seat_load_lowest: np.ndarray
-    foundation_force_peak: np.ndarray
-    foundation_force_lowest: np.ndarray
-    passage: Passage
-    foundation: Any
-    stable: np.ndarray | None = None
-    dominant_multiplier: np.ndarray | None = None
-
-    def __len__(self) -> int:
-        return len(self.converged)
-
-    @property
-    def verdicts(self) -> np.ndarray | None:
-        """"stable", "unstable" or "unknown" per member (`stable` True, False, None)."""
-        return None if self.stable is None else np.array(
-            [{True: "stable", False: "unstable"}.get(flag, "unknown") for flag in self.stable])
-
-    def solution(self, index: int) -> Solution:
-        """Member `index` as a `railtrack.Solution` (for its rail, moments, bowl ...)."""
-        passage = Passage(member(self.passage.track, index), member(self.passage.train, index))
-        state = "converged" if self.converged[index] else "did not converge"
-        return Solution(
-            passage=passage, foundation=member(self.foundation, index), harmonics=self.harmonics,
-            coefficients=self.coefficients[index], method="newton (batch)",
-            converged=bool(self.converged[index]), iterations=int(self.iterations[index]),
-            residual_history=np.array([self.residual[index]]),
-            truncation_error=float(self.truncation_error[index]),
-            message=f"member {index} of a sweep: {state}, relative residual "
-                    f"{self.residual[index]:.2e} after {self.iterations[index]} Newton steps")
-
-    def __repr__(self) -> str:
-        return study_repr(self)
-
-    def _repr_html_(self) -> str:
-        return study_html(self)
-
-    def to_xarray(self):
-        """Every member as an `xarray.Dataset` (CF units; `railtrack.studies.study_export`)."""
-        from .study_export import sweep_dataset
-        return sweep_dataset(self)
-
-    def to_dataframe(self):
-        """`to_xarray` as a `pandas.DataFrame`: one row per member (one per swept value)."""
-        from .study_export import study_frame
-        return study_frame(self.to_xarray())
-
-    def to_netcdf(self, path):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from ..solvers.export import write_netcdf
-        return write_netcdf(self.to_xarray(), path)
-
-    def to_csv(self, path):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from ..solvers.export import write_csv
-        return write_csv(self.to_dataframe(), path)
 
 
 def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto", *,

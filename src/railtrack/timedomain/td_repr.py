@@ -11,10 +11,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..solvers.result_repr import (KN, MM, case_text, extent, law_text, render_html,
-                                   render_text, rows_of)
+from ..solvers.result_repr import KN, MM, case_text, extent, law_text
 
-__all__ = ["time_domain_rows", "time_domain_repr", "time_domain_html"]
+__all__ = ["time_domain_rows"]
 
 
 def _rows_first(values):
@@ -53,15 +52,3 @@ def time_domain_rows(s) -> tuple[str, list[tuple[str, str]]]:
                                                   "wheel")))
     return title, rows
 
-
-ROWS = {"TimeDomainSolution": time_domain_rows}
-
-
-def time_domain_repr(s) -> str:
-    """The short text repr of a `TimeDomainSolution`."""
-    return render_text(*rows_of(s, ROWS))
-
-
-def time_domain_html(s) -> str:
-    """The HTML table of a `TimeDomainSolution`."""
-    return render_html(*rows_of(s, ROWS))

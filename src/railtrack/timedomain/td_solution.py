@@ -8,13 +8,15 @@ from typing import Any
 import numpy as np
 
 from ..model.passage import Passage
-from .td_repr import time_domain_html, time_domain_repr
+from ..solvers.export import Exports
+from ..solvers.result_repr import ShortRepr
+from .td_repr import time_domain_rows
 
 __all__ = ["TimeDomainSolution"]
 
 
-@dataclass(frozen=True, eq=False)
-class TimeDomainSolution:
+@dataclass(frozen=True, eq=False, repr=False)
+class TimeDomainSolution(ShortRepr, Exports):
     """Periodic steady response of the FE ring found by `simulate_time_domain`.
 
     Attributes
@@ -143,28 +145,11 @@ class TimeDomainSolution:
                              "wheel=Wheel(...)) for contact forces")
         return loss_of_contact(self.contact_forces, float(self.times[1] - self.times[0]))
 
-    def __repr__(self) -> str:
-        return time_domain_repr(self)
-
-    def _repr_html_(self) -> str:
-        return time_domain_html(self)
+    _rows = time_domain_rows            # __repr__, _repr_html_ (ShortRepr)
+    _table_row = "time"                 # to_dataframe: a row per instant
 
     def to_xarray(self):
         """The last period as an `xarray.Dataset` (CF units; `railtrack.timedomain.td_export`)."""
         from .td_export import time_domain_dataset
         return time_domain_dataset(self)
 
-    def to_dataframe(self):
-        """`to_xarray` as a `pandas.DataFrame`: one row per time."""
-        from ..solvers.export import frame
-        return frame(self.to_xarray(), "time")
-
-    def to_netcdf(self, path):
-        """Write `to_xarray` to a netCDF file at `path` (SciPy's netCDF-3); the path."""
-        from ..solvers.export import write_netcdf
-        return write_netcdf(self.to_xarray(), path)
-
-    def to_csv(self, path):
-        """Write `to_dataframe` to a CSV file at `path`; the path."""
-        from ..solvers.export import write_csv
-        return write_csv(self.to_dataframe(), path)
