@@ -150,8 +150,8 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "[iwnicki1998manchester], as commonly quoted); stiffer in freight bogies"),
     PlausibleRange(
         "primary_damping", "N s/m", 1e3, 1e5, "primary dampers per wheel are",
-        "a few kN s/m per axlebox (Manchester benchmark [iwnicki1998manchester], not read "
-        "here)"),
+        "a few kN s/m per axlebox (Manchester benchmark [iwnicki1998manchester], as "
+        "commonly quoted)"),
     PlausibleRange(
         "dip_depth", "m", 1e-4, 5e-3, "dipped welds and joints are",
         "0.1-1 mm at welds, a few mm at dipped joints (Jenkins et al. 1974 [jenkins1974] "
