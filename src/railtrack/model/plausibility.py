@@ -183,16 +183,16 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "7850 kg/m^3 times I: 49E1 0.14, 60E1 0.24, 136RE 0.31 kg m (TimoshenkoRail.uic60)"),
     PlausibleRange(
         "track_mass", "kg", 30.0, 600.0, "equivalent track masses per wheel are",
-        "245 kg for British track (Jenkins et al. 1974 [jenkins1974], as quoted by the P2 formula, p2_force); "
-        "49.7 kg fitted to the paper's track (equivalent_track)"),
+        "245 kg for British track (Jenkins et al. 1974 [jenkins1974], as p2_force "
+        "quotes them); 49.7 kg fitted to the paper's track (equivalent_track)"),
     PlausibleRange(
         "track_stiffness", "N/m", 2e7, 5e8, "equivalent track stiffnesses per wheel are",
-        "150 MN/m for British track (Jenkins et al. 1974 [jenkins1974], as quoted in issue "
-        "20); 58.3 MN/m fitted to the paper's track (equivalent_track)"),
+        "150 MN/m for British track (Jenkins et al. 1974 [jenkins1974], as p2_force quotes "
+        "them); 58.3 MN/m fitted to the paper's track (equivalent_track)"),
     PlausibleRange(
         "track_damping", "N s/m", 1e4, 5e5, "equivalent track dampings per wheel are",
-        "55.4 kN s/m for British track (Jenkins et al. 1974 [jenkins1974], as quoted in issue "
-        "20); 340 kN s/m fitted to the paper's track (equivalent_track)"),
+        "55.4 kN s/m for British track (Jenkins et al. 1974 [jenkins1974], as p2_force quotes "
+        "them); 340 kN s/m fitted to the paper's track (equivalent_track)"),
 )
 """The plausible range of every input with a physical range (module docstring)."""
 
