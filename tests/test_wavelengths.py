@@ -87,3 +87,29 @@ def test_bad_arguments_are_named():
     with pytest.raises(ValueError, match="wavelengths"):
         axle_pattern_weight(rt.Train.paper(), [-1.0])
     assert dataclasses.is_dataclass(track)
+
+
+def test_book_recipes():
+    from railtrack.plotting.book.wavelengths import (
+        harmonic_table,
+        peaks_by_train,
+    )
+
+    track, law = (
+        rt.Track.paper(pad_damping=30e3),
+        rt.LinearFoundation(20e6, 20e3),
+    )
+    one = {"one axle": rt.Train.single_axle(wagon_length=18.0)}
+    speeds = np.arange(340.0, 380.0, 0.5)
+    ((discrete, smeared),) = peaks_by_train(
+        track, law, one, speeds
+    ).values()
+    # one axle per 18 m: both peak within 1 % of the undamped tangency
+    from railtrack.plotting.book.speed import smeared_critical_speed
+
+    tangency = smeared_critical_speed(track, law)
+    assert discrete == pytest.approx(tangency, rel=0.01)
+    assert smeared == pytest.approx(tangency, rel=0.01)
+    rows = harmonic_table(track, law, rt.Train.paper(), [3, 6])
+    assert [r[3] for r in rows] == ["0.00", "1.00"]  # cos(pi n / 6)
+    assert [r[1] for r in rows] == ["6.00", "3.00"]
