@@ -8,7 +8,8 @@ solutions followed through its folds; the parameter it follows in
 branch), `ramp` (the ring through rising or falling speeds),
 `hanging_sleeper` (the extremes around a void, from either method) and
 `random_support` (a Monte Carlo over sleepers' ballast stiffness, its
-draws in `random_draws`);
+draws in `random_draws`); `wavelengths` (the smeared, damped track
+under a train, and the share of the load each wavelength receives);
 `study_repr` (their short reprs and HTML tables).
 
 Imports: any layer below: `railtrack.model`, `railtrack.equations`,
