@@ -295,11 +295,23 @@ def test_the_count_check_rejects_a_stale_count():
 def test_course_guide_gives_durations_and_points_to_the_new_pages():
     guide = (BOOK / "course_guide.md").read_text()
     sessions = re.findall(r"^\d\. \*\*[^*]+\*\*, ([\d.]+) h", guide, re.M)
-    assert len(sessions) == 4, sessions
+    assert len(sessions) == 5, sessions
     assert "{doc}`instructor`" in guide and "{doc}`glossary`" in guide
     # What a session requires is never declared skippable: the only things a
     # first reading may skip are the grey boxes, which the core path excludes.
     assert "can be skipped at first reading" not in guide
+
+
+
+def test_the_course_plan_takes_every_chapter_into_a_session():
+    """Chapters 12-14 were in no session (issue 30): each chapter has one."""
+    guide = (BOOK / "course_guide.md").read_text()
+    plan = re.search(r"^## \w+ sessions\n(.*?)^## ", guide, re.M | re.S)[1]
+    named = {int(n) for n in re.findall(r"chapters? (\d+)", plan)}
+    named |= {int(a) for a, b in re.findall(r"chapters (\d+) and (\d+)", plan)}
+    named |= {int(b) for a, b in re.findall(r"chapters (\d+) and (\d+)", plan)}
+    chapters = {int(p.name[:2]) for p in BOOK.glob("[01][0-9]_*.ipynb")}
+    assert chapters - named == set(), f"in no session: {sorted(chapters - named)}"
 
 
 # ---------------------------------------------------------------- captions ---

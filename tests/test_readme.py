@@ -59,3 +59,18 @@ def test_make_help_lists_venv():
     shown = subprocess.run(["make", "-s", "help"], cwd=ROOT, capture_output=True, text=True,
                            check=True).stdout
     assert re.search(r"^make venv\s+-", shown, re.M), shown
+
+
+def test_the_route_without_make_ends_by_starting_jupyterlab_on_the_book():
+    # issue 30: it stopped after the build and the tests, leaving a student
+    # without make no way to open the chapters
+    section = README.split("### Without make", 1)[1].split("\n## ", 1)[0]
+    blocks = re.findall(r"```(bash|bat)\n(.*?)\n```", section, re.S)
+    assert {shell for shell, _ in blocks} == {"bash", "bat"}, blocks
+    lab = re.search(r"--ServerApp\.root_dir=\S*?/?book\b",
+                    (ROOT / "Makefile").read_text(encoding="utf-8"))
+    assert lab, "make lab no longer opens book/: update this test"
+    for shell, code in blocks:
+        last = code.strip().splitlines()[-1].split("#")[0].split()
+        assert last[:2] == ["jupyter", "lab"], (shell, last)
+        assert "--ServerApp.root_dir=book" in last, (shell, last)
