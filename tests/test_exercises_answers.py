@@ -108,6 +108,11 @@ ANSWERS = {
         ("speed where omega* meets omega_1", r"omega\* = omega_1 at v = ([\d.]+) m/s", "m/s", 0.05),
         ("the same in km/h", r"omega\* = omega_1 at v = [\d.]+ m/s = (\d+) km/h", "km/h", 0.5),
     ],
+    "2.3": [
+        ("sleeper-passing frequency", r"sleeper passing: ([\d.]+) rad/s", "rad/s", 0.05),
+        ("bending wavelength", r"bending wavelength ([\d.]+) m", "m", 0.005),
+        ("the same in spans", r"m, ([\d.]+) spans", "bare", 0.05, r"span"),
+    ],
     "3.1": [
         ("soft pad's frequency in Hz", r"library:\n\s+omega_0 = \d+ rad/s = ([\d.]+) Hz", "Hz", 0.05),
         # (chapter 10's omega_b of a 200 kg sleeper on the pad of Table 1 is
@@ -136,6 +141,12 @@ ANSWERS = {
     "4.2": [
         ("spacing beyond which the dip is within 1 %", r"for D > ([\d.]+) m", "m", 0.005),
     ],
+    "4.3": [
+        ("weight of the first harmonic", r"first harmonic: weight ([\d.]+) of 2Q",
+         "bare", 0.0005, r"2Q|weight|axle"),
+        ("weight of the least loaded harmonic", r"least weighted: n = \d+, weight ([\d.]+)",
+         "bare", 0.0005, r"2Q|weight|axle"),
+    ],
     "5.1": [
         ("fewest samples that are exact for w^5", r"N =\s+(\d+): exact to round-off", "samples", 0),
     ],
@@ -145,6 +156,12 @@ ANSWERS = {
     "5.3": [
         ("slope of the aliasing error", r"fitted slope of log\(error\) against log\(N\): (\S+)",
          "slope", 0.05),
+    ],
+    "5.4": [
+        ("time step", r"time step ([\d.]+) ms", "ms", 0.005),
+        ("highest frequency kept", r"omega_15 = ([\d.]+) rad/s", "rad/s", 0.05),
+        ("samples per period of harmonic 15", r"([\d.]+) samples per period",
+         "bare", 0.005, r"sample"),
     ],
     "6.1": [
         ("steps taken at k2 = 10 MN/m", r"\| 10 \| [\d.]+ \| n = 0 \| \d+ \| [\d.]+ \| (\d+) \|",
@@ -163,6 +180,15 @@ ANSWERS = {
         ("threshold damping on k2 = 20 MN/m", r"\| 20 \| (\d+) \| \d+ \|", "kN s/m", 0.5),
         ("paper's damping over the threshold", r"threshold at k2 = 20 MN/m: ([\d.]+)", "ratio", 0.05),
     ],
+    "6.4": [
+        ("frequency on the foundation alone", r"foundation alone: ([\d.]+) rad/s", "rad/s", 0.05),
+        ("the same in Hz", r"rad/s, ([\d.]+) Hz", "Hz", 0.05),
+        ("frequency on the soft foundation", r"on k2 = 10 MN/m: ([\d.]+) rad/s", "rad/s", 0.05),
+        ("harmonic that reaches it", r"reaching it: n = ([\d.]+)",
+         "bare", 0.05, r"harmonic|\bn\s*="),
+        ("harmonic that reaches it on the soft foundation", r"and on k2 = 10 MN/m: n = ([\d.]+)",
+         "bare", 0.05, r"harmonic|\bn\s*="),
+    ],
     # ------------------------------------------------------ chapters 7-12 ---
     "7.2": [
         # the sweep's grid is 10 m/s, from 10 m/s: its lowest speed
@@ -177,6 +203,10 @@ ANSWERS = {
         ("part of the period lifted at 150 m/s", r"lifted during \d+%.*?, (\d+)% at 150", "%", 0.5,
          r"lift|above (?:its|the) rest"),
         ("uplift of a support that can only push", r"can only push: ([\d.]+) mm", "mm", 0.005),
+    ],
+    "7.3": [
+        ("mean force of the swing", r"mean force of the swing: ([\d.]+) kN",
+         "kN", 0.0005, r"mean|swing"),
     ],
     "8.1": [
         ("first-order dip at eps = 0.8", r"\| 0\.8 \| \S+ \| (\S+) \|", "mm", 0.0005),
@@ -193,6 +223,10 @@ ANSWERS = {
         ("mean of the equivalent spring", r"mean:\s+equivalent (\S+) mm", "mm", 0.00005),
         ("uplift of the equivalent spring", r"uplift: equivalent ([\d.]+) mm", "mm", 0.00005),
     ],
+    "8.3": [
+        ("tangent stiffness at 1 mm", r"tangent stiffness at 1 mm: ([\d.]+) MN/m", "MN/m", 0.05),
+        ("deflection where the tangent is twice k2", r"twice k2 at ([\d.]+) mm", "mm", 0.0005),
+    ],
     "9.1": [
         ("mean rail-seat load of the C80 wagon", r"mean rail-seat load: predicted ([\d.]+) kN",
          "kN", 0.05),
@@ -204,6 +238,12 @@ ANSWERS = {
     "9.2": [
         ("largest gap of the auto solve to m = 400", r"largest gap of auto \(m = \d+\) to m = 400: ([\d.]+) %",
          "%", 0.005, r"gap|differ|agree"),
+    ],
+    "9.3": [
+        ("bed modulus", r"k = ([\d.]+) MN/m²", "bare", 0.005, r"MN/m²|modulus|\bk\b"),
+        ("static dip under one wheel", r"static dip under one wheel: ([\d.]+) mm", "mm", 0.0005),
+        ("share on the sleeper", r"share of the wheel load on the sleeper: ([\d.]+)",
+         "bare", 0.0005, r"share|wheel load|λL"),
     ],
     "10.1": [
         ("Winkler speed with EI doubled", r"Winkler: \d+ -> (\d+) m/s", "m/s", 0.5,
@@ -259,6 +299,11 @@ ANSWERS = {
         ("difference of the 1200-step run", r"1200 steps: (\S+) mm", "mm", 0.05e-6),
         ("difference of the extrapolation", r"extrapolated: (\S+) mm", "mm", 0.05e-7),
     ],
+    "11.4": [
+        ("time step", r"time step ([\d.]+) ms", "ms", 0.0005),
+        ("time steps per period of harmonic 15", r"(\d+) time steps per period",
+         "bare", 0.5, r"harmonic 15|15th|n = 15"),
+    ],
     "12.1": [
         ("rise of the most loaded sleeper", r"most loaded: sleeper \d+, \+(\d+)% over sound track",
          "%", 0.5),
@@ -271,6 +316,10 @@ ANSWERS = {
         ("its lowest displacement over a sound sleeper's",
          r"its lowest displacement: ([\d.]+) of a sound", "ratio", 0.005,
          r"hard|stiff|lowest|deflect|displacement of"),
+    ],
+    "12.3": [
+        ("the allowed cell lengths", r"cells of N = (\[[\d, ]+\])", "list", 0),
+        ("shortest cell of at least four", r"at least 4: N = (\d+)", "samples", 0),
     ],
     "13.1": [
         ("the increment's ratio when the dip is twice as deep",
@@ -290,6 +339,12 @@ ANSWERS = {
          0.005, r"dynamic factor|P_?\{?max\}?\s*/\s*Q"),
         ("(a): the fourth dynamic factor", r"dynamic factor: (?:[\d.]+, ){3}([\d.]+)", "bare",
          0.005, r"dynamic factor|P_?\{?max\}?\s*/\s*Q"),
+    ],
+    "13.3": [
+        # (chapter 9's moving wagon lifts the rail by 0.086 mm too)
+        ("static compression", r"static compression ([\d.]+) mm", "mm", 5e-05,
+         r"compress|Hertz|contact|δ|\\delta"),
+        ("contact stiffness at the static load", r"at the static load (\d+) MN/m", "MN/m", 0.5),
     ],
     "14.1": [
         ("paper's track: steps to 0.1 %",
@@ -350,6 +405,10 @@ KNOWN_GIVE_AWAYS: dict[str, str] = {
 NOT_NUMBERS = {
     "7.1": "(a) is a derivation, (b) checks it and prints the gap z0 the question gives, "
            "(c) asks for an argument",
+    "12.4": "an open study: a bisection whose threshold depends on the bracket and "
+            "tolerance the student chooses; its solution sketches the method",
+    "13.4": "an open study: an estimate by hand and a bisection whose result depends on "
+            "the bracket and tolerance the student chooses; its solution sketches the method",
 }
 
 
