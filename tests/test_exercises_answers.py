@@ -318,8 +318,12 @@ ANSWERS = {
          r"hard|stiff|lowest|deflect|displacement of"),
     ],
     "12.3": [
-        ("the allowed cell lengths", r"cells of N = (\[[\d, ]+\])", "list", 0),
-        ("shortest cell of at least four", r"at least 4: N = (\d+)", "samples", 0),
+        ("time to the next cell", r"passed in ([\d.]+) ms", "ms", 0.05),
+        ("Floquet phase of the first harmonic", r"first harmonic: ([\d.]+) rad", "bare", 0.0005,
+         r"phase|θ|theta"),
+        # (chapters 6 and 14 print a [15] of the fixed point's starting harmonic)
+        ("harmonics in phase from cell to cell", r"whole number of turns: (\[[\d, ]+\])",
+         "list", 0, r"turn|in phase|Floquet|θ|theta"),
     ],
     "13.1": [
         ("the increment's ratio when the dip is twice as deep",
