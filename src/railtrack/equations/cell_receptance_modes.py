@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..model.passage import Passage
-from .cell_receptance import _check_sleepers, cell_receptance  # noqa: F401 (doctest)
+from .cell_receptance import _check_sleepers
 from .receptance import _sech, bending_wavenumber, receptance_factors
 
 __all__ = ["CellReceptanceModes", "cell_receptance_modes"]
@@ -97,6 +97,7 @@ def cell_receptance_modes(passage: Passage, omega: ArrayLike,
     Examples
     --------
     >>> import numpy as np
+    >>> from railtrack.equations.cell_receptance import cell_receptance
     >>> passage = Passage.paper()
     >>> modes = cell_receptance_modes(passage, 80.0, 4)
     >>> lam = modes.numerator / modes.denominator
