@@ -144,7 +144,7 @@ SKIPPABLE_SECTIONS = {
                            "The linear law's second peak, and what the folds sit on",
                            "Hill's matrix, derived", "A third method: the ring linearised"],
     "12_verification": ["Mesh and time-step convergence"],
-    "15_conclusions": ["Misprints"],
+    "16_conclusions": ["Misprints"],
 }
 DERIVATION_CHAPTERS = ["02_rail_receptance", "03_sleeper_dynamics", "04_train_load",
                        "05_semi_analytical_method", "06_linear_foundation",
