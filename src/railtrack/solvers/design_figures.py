@@ -36,24 +36,13 @@ from ..model.rail_section import UIC60, RailSection
 from ..model.validation import require_positive
 from .arguments import require_count
 from .design_summary import DesignSummary, eisenmann_factor, EISENMANN_RANGE_KMH, TRACK_QUALITY
+from .time_histories import periodic_peak
 
 __all__ = ["DesignFigures", "design_summary"]
 
 SECTION_MISMATCH = 0.1
 """Relative gap between the section's EI and the modelled rail's above which the summary says so."""
 
-
-def _peak(values: np.ndarray, sign: float) -> np.ndarray:
-    """sign * max over the last (periodic) axis of sign * values, refined by a parabola."""
-    scaled = sign * values
-    i = np.argmax(scaled, axis=-1)[..., None]
-    n = values.shape[-1]
-    left, middle, right = (np.take_along_axis(scaled, (i + k) % n, axis=-1)[..., 0]
-                           for k in (-1, 0, 1))
-    curvature = left - 2.0 * middle + right
-    with np.errstate(divide="ignore", invalid="ignore"):
-        offset = np.where(curvature < 0, 0.5 * (left - right) / curvature, 0.0)
-    return sign * (middle - 0.25 * (left - right) * offset)
 
 
 def _on_grid(coefficients: np.ndarray, samples: int) -> np.ndarray:
@@ -100,7 +89,7 @@ def _moments(solution, sleepers: int, points_per_span: int,
     times = np.arange(count) * period / count
     at = np.arange(sleepers * points) * span / points                  # the sleepers among them
     grid = solution.rail_bending_moment(times[None, :], at[:, None])   # (x, t)
-    hogging = float(np.min(_peak(grid, -1.0)))
+    hogging = float(np.min(periodic_peak(grid, -1.0)))
     return max(sagging, float(grid.max())), min(hogging, 0.0)
 
 
@@ -149,7 +138,8 @@ def design_summary(solution, *, section: RailSection | None = None, bearing_area
         cell_solution = None
     sleepers = 1 if cell_solution is None else int(cell_solution.coefficients.shape[0])
     n = max(2048, 1 << int(np.ceil(np.log2(4 * (_top_harmonic(solution) + 1)))))
-    seat, foundation = (_peak(history, 1.0) for history in _histories(solution, cell_solution, n))
+    histories = _histories(solution, cell_solution, n)
+    seat, foundation = (periodic_peak(history, 1.0) for history in histories)
     # the free rail under the wheels costs a receptance per harmonic and point: fewer points
     sagging, hogging = _moments(solution, sleepers, points_per_span,
                                 (2, 4) if wheels else (4, 8))

@@ -11,8 +11,9 @@ from __future__ import annotations
 import numpy as np
 
 from ..equations.rail_field import seat_load_coefficients
+from ..solvers.time_histories import periodic_peak
 
-__all__ = ["GRID", "extremes_grid", "peak", "period_extremes"]
+__all__ = ["GRID", "extremes_grid", "period_extremes"]
 
 GRID = 256
 """Fewest samples per period at which the extremes are read, each refined by a parabola;
@@ -23,18 +24,6 @@ def extremes_grid(harmonics: int) -> int:
     """Samples per period for m harmonics: `GRID`, or the power of two >= 8 (m + 1)."""
     return max(GRID, 1 << int(np.ceil(np.log2(8 * (harmonics + 1)))))
 
-
-def peak(values: np.ndarray, sign: float) -> np.ndarray:
-    """sign * the max over the last (periodic) axis of sign * values, refined by a parabola."""
-    scaled = sign * values
-    i = np.argmax(scaled, axis=-1)[..., None]
-    n = values.shape[-1]
-    left, middle, right = (np.take_along_axis(scaled, (i + k) % n, axis=-1)[..., 0]
-                           for k in (-1, 0, 1))
-    curvature = left - 2.0 * middle + right
-    with np.errstate(divide="ignore", invalid="ignore"):
-        offset = np.where(curvature < 0, 0.5 * (left - right) / curvature, 0.0)
-    return sign * (middle - 0.25 * (left - right) * offset)
 
 
 def period_extremes(system, coefficients: np.ndarray, size: int) -> dict:
@@ -69,6 +58,8 @@ def period_extremes(system, coefficients: np.ndarray, size: int) -> dict:
     w, rate, seat = np.fft.irfft(spectrum, grid, axis=-1)
     with np.errstate(invalid="ignore", over="ignore"):
         force = -np.broadcast_to(np.asarray(system.foundation.force(w, rate), dtype=float), w.shape)
-    return dict(lowest=peak(w, -1.0), highest=peak(w, 1.0), seat_load_peak=peak(seat, 1.0),
-                seat_load_lowest=peak(seat, -1.0), foundation_force_peak=peak(force, 1.0),
-                foundation_force_lowest=peak(force, -1.0))
+    return dict(lowest=periodic_peak(w, -1.0), highest=periodic_peak(w, 1.0),
+                seat_load_peak=periodic_peak(seat, 1.0),
+                seat_load_lowest=periodic_peak(seat, -1.0),
+                foundation_force_peak=periodic_peak(force, 1.0),
+                foundation_force_lowest=periodic_peak(force, -1.0))
