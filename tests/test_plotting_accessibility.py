@@ -48,7 +48,7 @@ from railtrack.plotting.book import rail_span as rs  # noqa: E402
 from railtrack.plotting.book import sleepers as slp  # noqa: E402
 from railtrack.plotting.book import wheels as whl  # noqa: E402
 from railtrack.plotting.book import speed as sp  # noqa: E402
-from railtrack.plotting.branch import plot_branch, plot_multipliers, ramp_on_branch  # noqa: E402
+from railtrack.plotting.branch import plot_branch, plot_multipliers  # noqa: E402
 from railtrack.plotting.solution import plot_solution  # noqa: E402
 from railtrack.plotting.book import speed_laws as sl  # noqa: E402
 from railtrack.plotting.book import track_engineer as te  # noqa: E402

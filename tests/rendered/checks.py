@@ -19,16 +19,15 @@ from pathlib import Path
 import sys
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
-from browser import (  # noqa: E402  (the server and browser set-up, shared with make pdf)
-    IMAGE_TIMEOUT,
-    MATHJAX_TIMEOUT,
-    PAGE_LOAD_TIMEOUT,
-    drain_logs,
-    find_browser,
-    headless_chromium,
+# the server and browser set-up, shared with make pdf; conftest.py and
+# test_checks_fail.py reach find_browser, headless_chromium and
+# serve_directory through this module
+from browser import (  # noqa: E402
+    find_browser as find_browser,
+    headless_chromium as headless_chromium,
     load_page,
     save_screenshot,
-    serve_directory,
+    serve_directory as serve_directory,
 )
 
 MAX_REPORTED = 8  # problems of one kind listed per page

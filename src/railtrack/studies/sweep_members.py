@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import warnings
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -29,6 +30,9 @@ from ..solvers.solve import WARN_TRUNCATION
 from ..solvers.threads import blas_threads
 from ..solvers.truncation import predict_harmonics
 from .period_extremes import period_extremes
+
+if TYPE_CHECKING:  # sweep_result imports this module
+    from .sweep_result import Sweep
 
 __all__ = ["BLOCK", "MAX_RESULT_BYTES", "result_bytes", "require_fits", "split_fields",
            "check_members_conditioning", "predicted_harmonics", "polynomial_samples", "rows",

@@ -20,7 +20,7 @@ from matplotlib import animation
 from matplotlib.figure import Figure
 
 from ..solution import draw_bowl
-from ..style import BLUE, MM, VERMILLION, new_figure, series_style
+from ..style import MM, new_figure, series_style
 
 __all__ = ["GRAVITY", "support_stiffness", "winkler_parameters", "wheel_positions", "winkler_bowl",
            "winkler_moment", "static_bowl", "bowl_uplift", "LoadHistories", "load_histories",
