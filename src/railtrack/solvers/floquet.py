@@ -46,19 +46,15 @@ from ..equations.harmonic_balance import harmonic_system
 from ..equations.hill import bloch_phases, hill_matrix, tangent_toeplitz
 from .contour import contour_eigenpairs, polish
 from .floquet_assembly import TAIL_LIMIT, _distinct, floquet_result
-from .floquet_track import continue_exponents, newton_parts
+from .floquet_guess import EDGE, continued_exponents, mirrored_family, with_mirror
+from .floquet_track import newton_parts
 from .threads import blas_threads
-from .floquet_verdict import MIN_POINTS, NEUTRAL, Floquet
+from .floquet_verdict import MIN_POINTS, Floquet
 from .solution import Solution
 
 __all__ = ["Floquet", "floquet", "floquet_result", "TAIL_LIMIT"]
 MEMORY_BYTES = 256 * 2**20
 """Most memory one stack of Hill's matrices may take (phases are solved in groups) [bytes]."""
-EDGE = 1e-6
-"""Tolerance on |Im lambda T| <= pi at the edges of the strip [rad]."""
-NEAR_DOUBLE = 1e-3
-"""Two multipliers of one phase closer than this (times max(1, |mu|)) at a guess are a near-double
-pair: continuing both may land both on one (`_continued`) [-]."""
 RESIDUAL_LIMIT = 1e-6
 """Largest relative residual ||H p|| / ||H|| of an exponent after Newton's refinement."""
 
@@ -201,7 +197,7 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
         top = np.abs(np.arange(-m, m + 1)) > band
         search = toeplitz[:, m - band:m + band + 1, m - band:m + band + 1]
         if guess is not None:
-            continued = _continued(guess, passage, toeplitz, period, bases, (low, high), top)
+            continued = continued_exponents(guess, passage, toeplitz, period, bases, (low, high), top)
             if continued is not None:
                 return floquet_result(_distinct(continued[0]), bases, sleepers, m, period,
                                       min_multiplier, solution, max_multiplier=max_multiplier,
@@ -211,7 +207,7 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
             phases = bloch_phases(passage, base) if shifts else np.array([float(base)])
             # Conjugation maps the exponents of phase theta onto those of -theta: where the
             # family holds both, the phases above pi are the mirror images of those below.
-            mirrored = _mirrored(phases)
+            mirrored = mirrored_family(phases)
             solved = phases[phases <= np.pi + 1e-12] if mirrored else phases
 
             # Phases in groups whose stack of matrices stays under MEMORY_BYTES.
@@ -243,21 +239,9 @@ def floquet(solution: Solution, theta=None, *, harmonics: int | None = None,
             values, vectors, residuals = (np.concatenate(part) for part in zip(*parts))
             values, inside, tails = strip_roots(values, vectors, residuals, low, high, top)
             for i in np.flatnonzero(inside):
-                found += _with_mirror(values[i], phase[i], tails[i], base[i], vectors[i], mirrored[i])
+                found += with_mirror(values[i], phase[i], tails[i], base[i], vectors[i], mirrored[i])
         return floquet_result(_distinct(found), bases, sleepers, m, period, min_multiplier, solution,
                               max_multiplier=max_multiplier, points=points, shifts=shifts)
-
-
-def _with_mirror(z, phase, tail, base, vector, mirrored) -> list:
-    """The exponent, and where the family holds -phase, its conjugate there.
-
-    H(conj z; -theta) is the conjugate of H(z; theta) with the harmonics
-    reversed, so the mirror's eigenvector is conj(p_{-k}).
-    """
-    found = [(z, phase, tail, base, vector)]
-    if mirrored and 1e-12 < phase < np.pi - 1e-12:
-        found.append((np.conj(z), 2 * np.pi - phase, tail, base, np.conj(vector[::-1])))
-    return found
 
 
 def strip_roots(values: np.ndarray, vectors: np.ndarray, residuals: np.ndarray, low: float,
@@ -274,79 +258,3 @@ def strip_roots(values: np.ndarray, vectors: np.ndarray, residuals: np.ndarray, 
         & (values.real <= high) & (residuals < RESIDUAL_LIMIT)
     folded = values.real + 1j * (np.pi - np.mod(np.pi - values.imag, 2 * np.pi))
     return folded, inside, np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
-
-
-def _continued(guess: Floquet, passage, toeplitz: np.ndarray, period: float, bases: np.ndarray,
-               box: tuple[float, float], top: np.ndarray) -> tuple[list, float] | None:
-    """The exponents of `guess` continued to this solution and their ceiling, or None.
-
-    `railtrack.solvers.floquet_track`; None where that cannot be trusted.
-    """
-    if not isinstance(guess, Floquet) or guess.vectors is None:
-        raise TypeError("guess must be a Floquet from rt.floquet of a neighbouring Solution (with "
-                        f"its eigenvectors); got {type(guess).__name__}")
-    if guess.base_phases.shape != bases.shape or not np.allclose(guess.base_phases, bases):
-        raise ValueError(f"guess was computed for the base phases {guess.base_phases!r}, this "
-                         f"search asks for {bases!r}: pass the same theta")
-    n, count = toeplitz.shape[-1], guess.vectors.shape[1]
-    m, m_guess = (n - 1) // 2, (count - 1) // 2
-    vectors = np.zeros((guess.vectors.shape[0], n), dtype=complex)
-    cut = min(m, m_guess)
-    vectors[:, m - cut:m + cut + 1] = guess.vectors[:, m_guess - cut:m_guess + cut + 1]
-    # each exponent's base phase and whether its family is mirrored (then only the
-    # phases up to pi are continued; the others are their conjugates).  All are
-    # continued: one left out may rise fast (near a fold, on chapter 10's branch, from
-    # under half the dominant |mu| to above it in one step).
-    families = [(base, bloch_phases(passage, base)) for base in bases]
-    families = [(base, family, _mirrored(family)) for base, family in families]
-    keep, base_of, mirror_of = [], [], []
-    for i, phase in enumerate(guess.phases):
-        for base, family, mirrored in families:
-            if np.min(np.abs(np.mod(phase - family + np.pi, 2 * np.pi) - np.pi)) < 1e-9:
-                if not mirrored or phase <= np.pi + 1e-12:
-                    keep.append(i), base_of.append(base), mirror_of.append(mirrored)
-                break
-    keep = np.array(keep, dtype=int)
-    if keep.size == 0:
-        return None
-    values, vectors, kept, move = continue_exponents(
-        passage, toeplitz, period, guess.exponents[keep] * guess.period, vectors[keep],
-        guess.phases[keep])
-    # One lost on the way (not converged, or two onto one) is as a rule a pair meeting
-    # on the real axis, whose two real multipliers then part fast: search in full.
-    # Only the twin of a near-double pair off the real axis (1e-3 apart already at the
-    # guess, as on chapter 10's branch at 575 m/s) stays with its twin, under the ceiling.
-    start = np.exp(guess.exponents[keep] * guess.period)
-    phases = guess.phases[keep]
-    for j in np.flatnonzero(~kept):
-        near = NEAR_DOUBLE * max(1.0, abs(start[j]))
-        twins = kept & (np.abs(phases - phases[j]) < 1e-9) & (np.abs(start - start[j]) < near)
-        # near the real axis the twin is the conjugate, about to meet it there
-        if not twins.any() or abs(start[j].imag) < near:
-            return None
-    ceiling = max(guess.ceiling, float(np.max(np.abs(start[~kept]), initial=0.0))) + move
-    low, high = box
-    # One that crossed the strip's edge, |Im z| = pi, is a disturbance of the next phase
-    # of the family now, where its own exponent lies inside the strip: search in full.
-    if np.any(np.abs(values.imag) > np.pi + EDGE):
-        return None
-    tails = np.sum(np.abs(vectors[:, top]) ** 2, axis=1)
-    # The ceiling bounds the multipliers not continued; it matters only for a "stable":
-    # a resolved multiplier found outside proves "unstable" whatever the others do.
-    outside = np.any(kept & (tails <= TAIL_LIMIT) & (values.real > np.log1p(NEUTRAL)))
-    # the dominant multiplier must be among those continued: none not continued may
-    # reach it (a pair colliding on the real axis loses one, whose partner then leads)
-    top_listed = np.max(np.abs(np.exp(values[kept & (tails <= TAIL_LIMIT)])), initial=0.0)
-    if np.any(values.real > high) or (ceiling >= 1.0 and not outside) or ceiling >= top_listed:
-        return None
-    found: list = []
-    for i in np.flatnonzero(kept & (values.real >= low)):   # below: left through the bottom
-        found += _with_mirror(values[i], guess.phases[keep[i]], tails[i], base_of[i],
-                              vectors[i], mirror_of[i])
-    return found, ceiling
-
-
-def _mirrored(phases: np.ndarray) -> bool:
-    """Whether the family of phases holds -theta for each theta (conjugate exponents)."""
-    return bool(np.all(np.min(np.abs(np.mod(-phases[:, None] - phases[None, :] + np.pi,
-                                              2 * np.pi) - np.pi), axis=1) < 1e-9))
