@@ -14,7 +14,7 @@ import pytest
 import railtrack as rt
 from railtrack.equations.cell_blocks import solve_blocks
 from railtrack.equations.cell_harmonic_balance import _forces, _synthesize, cell_operators
-from railtrack.equations.cell_receptance import cell_receptance_modes
+from railtrack.equations.cell_receptance_modes import cell_receptance_modes
 from railtrack.equations.load import axle_factor
 from railtrack.equations.receptance import receptance_factors
 from railtrack.model.passage import Passage

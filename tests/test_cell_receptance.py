@@ -18,8 +18,8 @@ from railtrack.equations.cell_receptance import (
     cell_moving_load,
     cell_receptance,
     cell_receptance_lattice_sum,
-    cell_receptance_modes,
 )
+from railtrack.equations.cell_receptance_modes import cell_receptance_modes
 from railtrack.equations.load import load_coefficients
 from railtrack.equations.rail_field import offset_receptance
 from railtrack.equations.receptance import bending_wavenumber, rail_receptance

@@ -42,7 +42,7 @@ import numpy as np
 
 from ..model.cell import cell_size, sleeper_array
 from ..model.passage import Passage
-from .cell_receptance import cell_receptance_modes
+from .cell_receptance_modes import cell_receptance_modes
 from .load import axle_factor
 from .receptance import receptance_factors
 

@@ -23,7 +23,7 @@ from functools import cached_property
 import numpy as np
 
 from ..model.passage import Passage
-from .cell_receptance import cell_receptance_modes
+from .cell_receptance_modes import cell_receptance_modes
 from .load import axle_factor
 from .receptance import receptance_factors
 
