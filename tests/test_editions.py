@@ -144,6 +144,8 @@ SKIPPABLE_SECTIONS = {
                            "The linear law's second peak, and what the folds sit on",
                            "Hill's matrix, derived", "A third method: the ring linearised"],
     "12_verification": ["Mesh and time-step convergence"],
+    "14_wheel_on_the_rail": ["How the library solves them",
+                             "Checks: the wheel that becomes a constant force"],
     "16_conclusions": ["Misprints"],
 }
 DERIVATION_CHAPTERS = ["02_rail_receptance", "03_sleeper_dynamics", "04_train_load",
