@@ -206,10 +206,10 @@ def _book_parameter_sets():
         ballasted.replace(sleeper_spacing=0.3, pad_stiffness=32.5e6,
                           pad_damping=37.5e3, sleeper_mass=ballasted.sleeper_mass / 2),
         rt.LinearFoundation(10e6, 10e3), ballasted.replace(pad_damping=1e6),
-        # chapter 12: hanging sleepers with their self-weight
+        # chapter 13: hanging sleepers with their self-weight
         *(rt.GapFoundation(g, 20e6, 0.2e6) for g in (0.5e-3, 1e-3, 2e-3)),
         rt.SleeperCell.identical(rt.Passage(track, wagon), law, 8, gravity=STANDARD_GRAVITY),
-        # chapter 13: wheels, dips, P2
+        # chapter 14: wheels, dips, P2
         rt.Wheel(600.0), rt.Wheel(1200.0), dip,
         rt.CosineDip(0.25e-3, 0.5, 18.0, centre=9.3), rt.CosineDip(2e-3, 1.0, 18.0, centre=9.3),
         rt.equivalent_track(ballasted, rt.LinearFoundation.ballasted()),
@@ -226,9 +226,9 @@ def test_the_books_parameter_sets_are_plausible():
 
 
 @pytest.mark.parametrize("limit", [
-    lambda: rt.Wheel(1e-3),                                # chapter 13's 1 g wheel
-    lambda: rt.Wheel(600.0, hertz_constant=9.4e15),        # chapter 13's C_H x 1e5
-    lambda: rt.Track.paper(pad_stiffness=100 * 220e6),     # chapter 14's rigid pad
+    lambda: rt.Wheel(1e-3),                                # chapter 14's 1 g wheel
+    lambda: rt.Wheel(600.0, hertz_constant=9.4e15),        # chapter 14's C_H x 1e5
+    lambda: rt.Track.paper(pad_stiffness=100 * 220e6),     # chapter 16's rigid pad
 ])
 def test_the_books_limit_studies_warn_and_can_be_silenced(limit):
     # Deliberately far outside real track: they warn, and plausibility("ignore")

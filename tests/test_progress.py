@@ -101,7 +101,7 @@ def test_no_call_the_book_makes_shows_a_bar():
     assert 400 * (2 * 30 + 1) ** 2 < PROGRESS_WORK
     # check_branch: chapter 10's branch, 173 points at m = 25
     assert 173 * (2 * 25 + 1) ** 2 < PROGRESS_WORK
-    # the ring: chapter 13's finest (16 elements a span, 7200 steps), chapter 12's
+    # the ring: chapter 14's finest (16 elements a span, 7200 steps), chapter 13's
     # (16, 4800), chapter 10's two wagons (60 sleepers, 4, 1200), the defaults (8, 2400)
     for sleepers, elements, steps in ((30, 16, 7200), (30, 16, 4800), (60, 4, 1200),
                                       (30, 8, 2400)):

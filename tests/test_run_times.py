@@ -1,7 +1,7 @@
 """Chapter 1's run times are measured by the build that shows them (issue 30).
 
 A hand-typed table of run times went stale (chapter 12 listed at 17 s when
-it took 54 s; chapters 13 and 14 missing).  Chapter 1 now carries the
+it took 54 s; chapters 13 and 14 missing; the chapters have since been renumbered).  Chapter 1 now carries the
 ``{run-times}`` directive of book/_ext/run_times.py, which writes the run
 time myst-nb measured for each notebook in the same build.  These tests
 build a two-notebook Sphinx project with it: executed, the table holds each

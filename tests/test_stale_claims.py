@@ -1,6 +1,6 @@
 """Claims the library has outgrown stay out of the book (issue 29, item 8).
 
-Since chapters 12 and 13 the library carries self-weight (``gravity=9.81``
+Since chapters 13 and 14 the library carries self-weight (``gravity=9.81``
 in a `SleeperCell`) and sleepers that differ, hanging ones included.  A
 chapter that solves the paper's model may still say that model leaves
 them out, but it must say whose model it means: a bare "the model has no
@@ -64,10 +64,10 @@ def test_the_about_page_does_not_say_every_claim_has_an_independent_check():
 
 
 def test_one_sleeper_standing_for_all_is_said_of_the_papers_model_only():
-    # stale since chapter 12 solves a cell of N sleepers, one of them hanging
+    # stale since chapter 13 solves a cell of N sleepers, one of them hanging
     text = (BOOK / "instructor.md").read_text(encoding="utf-8")
     note = re.search(r"^\*\*(One sleeper is all sleepers.*?)\*\*(.*?)\n\n",
                      text, re.M | re.S)
     assert note is not None, "the instructor's note on one sleeper is gone"
     assert "paper" in note[1], note[1]
-    assert "{doc}`12_sleepers_that_differ`" in note[2]
+    assert "{doc}`13_sleepers_that_differ`" in note[2]

@@ -108,7 +108,7 @@ def test_the_estimate_bounds_the_tail_of_a_force_that_follows_the_profile():
 
 
 def test_a_flat_rail_keeps_the_growth_by_one_and_a_half(levels):
-    # chapter 13 prints m for the smooth rail: the same levels as issue 27's rule
+    # chapter 14 prints m for the smooth rail: the same levels as issue 27's rule
     result = rt.solve(TRACK, rt.Train.paper(), LAW, wheel=WHEEL)
     assert levels == [120, 180] and result.harmonics == 180
     assert "m grows by 1.5 (the rail-top profile is flat" in result.message

@@ -2,7 +2,7 @@
 
 A table of run times typed into a page goes stale as soon as a chapter
 changes (chapter 1's listed chapter 12 at 17 s when it took 54 s, and had no
-row for chapters 13 and 14).  This directive writes the table when the page
+row for chapters 13 and 14; the chapters have since been renumbered).  This directive writes the table when the page
 is written, from the run times myst-nb recorded while executing each
 notebook in the same build (`make book`).  An edition built from the
 notebooks' stored outputs (`make test`, `make pdf`, the student edition)

@@ -138,12 +138,12 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "unsprung_mass", "kg", 200.0, 2000.0, "unsprung masses per wheel are",
         "half a wheelset: 906 kg for the Manchester benchmark [iwnicki1998manchester]; "
         "light-rail wheels a few hundred kg, axle-hung motors to about 2 t; 600 kg in "
-        "the book's chapter 13"),
+        "the book's chapter 14"),
     PlausibleRange(
         "hertz_constant", "N/m^1.5", 6e10, 1.5e11, "Hertz constants C_H are",
         "C_H = 2 E sqrt(R) / (3 (1 - nu^2)) for steel (E = 210 GPa, nu = 0.3) and wheel "
         "radii 0.2-0.6 m gives 6.9e10-1.2e11; 9.4e10 for a 0.46 m wheel on UIC60 "
-        "(the book's chapter 13; Thompson 2009, as commonly quoted)"),
+        "(the book's chapter 14; Thompson 2009, as commonly quoted)"),
     PlausibleRange(
         "primary_stiffness", "N/m", 2e5, 1e7, "primary suspensions per wheel are",
         "about 1 MN/m per axlebox for passenger bogies (Manchester benchmark "

@@ -7,7 +7,7 @@ mean height over the rail y_k, few.  For given wheel forces the sleepers
 are the constant-force cell with one more load, W P
 (`railtrack.solvers.cell_newton.solve_cell`, exact); what remains is the
 contact residual B(P, y) = [C_H max(delta, 0)^{3/2}]_p - P_p (- Q_k at p = 0).
-Its Jacobian is ``K C - I`` (the book's chapter 13): K the Hertz tangent
+Its Jacobian is ``K C - I`` (the book's chapter 14): K the Hertz tangent
 1.5 C_H delta^{1/2} on the AFT samples and C the contact's compression per
 unit P and y: the wheel's own receptance 1/(m_w omega_p^2) less the track's
 receptance under the moving wheels, the linear map P -> W P -> c ->
