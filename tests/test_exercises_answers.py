@@ -263,6 +263,22 @@ ANSWERS = {
         ("correlation of the load with k2", r"load (-[\d.]+)", "bare", 0.005, r"correlat"),
     ],
     "10.3": [
+        ("share of harmonic 2", r"share of harmonic 2: ([\d.]+)", "bare", 0.005,
+         r"share of harmonic 2"),
+    ],
+    "10.4": [
+        ("peak under the 24 m wagon", r"24 m wagon: peak ([\d.]+) m/s", "m/s", 0.05,
+         r"24 m|wagon of 24"),
+        ("the 24 m wagon's offset from the tangency",
+         r"24 m wagon: peak [\d.]+ m/s, smeared [\d.]+ m/s\n  ([+-][\d.]+) % from the tangency",
+         "%", 0.05, r"24 m|tangency"),
+    ],
+    "11.1": [
+        ("periods to grow a millionfold", r"([\d.]+) periods,", "bare", 0.05,
+         r"periods"),
+        ("track travelled meanwhile", r"periods, (\d+) m of track", "m", 0.5, r"track|travel"),
+    ],
+    "11.2": [
         ("the deciding disturbance's length", r"([\d.]+) wagons long", "bare", 0.05,
          r"wagons? long"),
         # part 2's line; the deepest solution's multiplier, above 2, is the first line
@@ -278,6 +294,14 @@ ANSWERS = {
         ("largest multiplier of the deepest solution",
          r"every wagon: abs\(μ\) (2\.\d+);", "bare", 0.005,
          r"abs\(μ\)|multiplier|\|\\mu\|"),
+    ],
+    "11.3": [
+        ("speed where the damped branch loses stability",
+         r"([\d.]+) m/s: complex, stability lost", "m/s", 0.05, r"complex|stabil|unit circle"),
+        ("speed where it regains it",
+         r"([\d.]+) m/s: complex, stability gained", "m/s", 0.05, r"complex|stabil|unit circle"),
+        ("Hill's multiplier at 480 m/s", r"Hill ([\d.]+), ring", "bare", 0.00005,
+         r"multiplier|abs\(μ\)|Hill"),
     ],
     "12.1": [
         ("error at 600 steps per period", r"600 steps per period: error (\S+) mm", "mm", 0.005e-5),

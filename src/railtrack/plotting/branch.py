@@ -129,7 +129,7 @@ def _verdicts(stable) -> np.ndarray:
     return np.array([{True: "stable", False: "unstable"}.get(flag, "unknown") for flag in stable])
 
 
-def plot_multipliers(branch, *, scanned=None) -> Figure:
+def plot_multipliers(branch, *, scanned=None, xlim=None) -> Figure:
     """The dominant Floquet multiplier |mu| along a branch, against the unit circle.
 
     Parameters
@@ -139,6 +139,9 @@ def plot_multipliers(branch, *, scanned=None) -> Figure:
     scanned : array_like, optional
         |mu| of the most unstable disturbance of any wavelength at each point
         (`railtrack.floquet` with ``theta="scan"``), drawn dashed.
+    xlim : (float, float), optional
+        Speed range shown [m/s]; set here, not afterwards, so that the
+        labels of the changes are placed for the range the reader sees.
 
     Points whose verdict is unknown (`railtrack.Branch.verdicts`) are left
     out.  Each part between folds is drawn in turn from the branch's start; folds
@@ -158,7 +161,7 @@ def plot_multipliers(branch, *, scanned=None) -> Figure:
                     label="dominant |μ|, disturbances of any wavelength", gid="scanned")
     ax.axhline(1.0, color=BLACK, lw=0.8, gid="unit-circle")
     names = {"real +": "real, +1", "real -": "real, −1", "complex": "complex pair"}
-    labelled = set()
+    labelled, notes = set(), []
     for change in branch.changes:
         # every change sits on the unit circle, by definition; the points either
         # side are a step of the branch away
@@ -170,14 +173,40 @@ def plot_multipliers(branch, *, scanned=None) -> Figure:
                 label=None if label in labelled else label)
         labelled.add(label)
         if not fold:
-            ax.annotate(f"{names[change.kind]}, {change.value:.1f} m/s", (change.value, 1.0),
-                        fontsize=7, xytext=(4, -12 if change.gains else 6),
-                        textcoords="offset points")
+            notes.append(ax.annotate(
+                f"{names[change.kind]}, {change.value:.1f} m/s", (change.value, 1.0),
+                fontsize=7, xytext=(4, -12 if change.gains else 6),
+                textcoords="offset points", gid="change-label"))
+    if xlim is not None:
+        ax.set_xlim(*xlim)
+    _separate_labels(ax, notes)
     ax.set_xlabel("train speed v [m/s]")
     ax.set_ylabel("largest Floquet multiplier |μ| per period [-]")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     return fig
+
+
+def _separate_labels(ax, notes, step: float = 9.0, tries: int = 8) -> None:
+    """Move each label away from the unit circle, a line at a time, until it overlaps none before it.
+
+    Two changes a few m/s apart on the same side of the line (a pair that comes
+    in at 513.3 and another at 537.9 m/s) would otherwise print over each other.
+    """
+    # lay the figure out first: constrained layout moves the axes, and the labels with them
+    ax.figure.draw_without_rendering()
+    renderer = ax.figure.canvas.get_renderer()
+    placed = []
+    for note in sorted(notes, key=lambda n: n.xy[0]):
+        dx, dy = note.xyann
+        away = step if dy > 0 else -step
+        for _ in range(tries):
+            box = note.get_window_extent(renderer)
+            if not any(box.overlaps(other) for other in placed):
+                break
+            dy += away
+            note.xyann = (dx, dy)
+        placed.append(note.get_window_extent(renderer))
 
 
 _RAMP_STYLES = ((ORANGE, ">", "x", "-"), (PURPLE, "<", "+", "--"),
