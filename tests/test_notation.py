@@ -352,3 +352,6 @@ def test_the_notation_table_lists_the_conventions():
     assert any(r"\kappa_j" in symbol for symbol in rows)
     assert r"$q$" in rows and r"\omega L/v" in rows[r"$q$"]
     assert any(r"\rho_0" in symbol and r"\rho_n" in symbol for symbol in rows)
+    # issue 30's pass: each meaning moved off a clashing symbol has a row
+    for moved in (r"$h$", r"\Theta", r"$\sigma$", r"\xi_l", r"Q_c", r"\gamma(t)"):
+        assert any(moved in symbol for symbol in rows), moved
