@@ -145,6 +145,8 @@ SKIPPABLE_SECTIONS = {
     "11_which_solution_the_track_reaches": ["Hill's matrix, derived",
                                             "A third method: the ring linearised"],
     "12_verification": ["Mesh and time-step convergence"],
+    "13_sleepers_that_differ": ["Against the time-domain ring",
+                                "One defect in how many sleepers?"],
     "14_wheel_on_the_rail": ["How the library solves them",
                              "Checks: the wheel that becomes a constant force"],
     "16_conclusions": ["Misprints"],
@@ -171,6 +173,24 @@ def test_what_a_first_reading_may_skip_is_marked_by_a_check_box(path):
         start = next(i for i, c in enumerate(cells)
                      if re.search(rf"^##+ {re.escape(heading)}", _text(c), re.M))
         assert any(start <= i <= start + 1 for i in boxes), f"no box under '{heading}'"
+
+
+def test_the_course_plan_and_chapter_13s_boxes_agree():
+    """Issue 30: chapter 13 got skip boxes; the guide's plan must not star them.
+
+    The core path (★) of chapter 13 ends at a heading no later than its first
+    boxed section, and the guide's list of what the boxes let a first reading
+    skip names every boxed section of the chapter."""
+    guide = (ROOT / "book" / "course_guide.md").read_text()
+    stem = "13_sleepers_that_differ"
+    end = re.search(r'★ chapter 13 up to "([^"]+)"', guide)[1]
+    headings = [m[1] for c in _cells(ROOT / "book" / f"{stem}.ipynb")
+                for m in re.finditer(r"^##+ (.+)$", _text(c), re.M)]
+    boxed = SKIPPABLE_SECTIONS[stem]
+    assert all(headings.index(end) <= headings.index(b) for b in boxed), end
+    grey = guide.split("The grey boxes let a first reading skip")[1]
+    grey = " ".join(grey.split("\n\n")[0].split())
+    assert all(f'"{b}"' in grey for b in boxed), grey
 
 
 def test_the_student_edition_promises_no_solution(tmp_path):

@@ -105,6 +105,137 @@ RULES = [
         "F_0 = 50 m/s^2 = 5 kN per sleeper",
     ),
     (
+        "g is the foundation force per sleeper mass, not a gap or gravity",
+        "prose",
+        re.compile(
+            r"w\s*<\s*-g\b|\(w\s*\+\s*g\)|(?:gap|hangs|by a gap|on) \$g\$"
+            r"|\\rho\s*S\s*g\b|M_j\s*g\b"
+        ),
+        "g = f/M (eq. 8); chapter 13's gap under a hanging sleeper is h, "
+        "and gravity is written out as 9.81 m/s^2.",
+        r"sleeper 15 hangs $g$ above its ballast and touches it when $w < -g$",
+    ),
+    (
+        "r is not an index, a ramp or a fit statistic",
+        "both",
+        re.compile(
+            r"\\varphi_r\b|\\kappa_r\b|\\sum_r\b|(?<![\w\\])r = 0, \\dots"
+            r"|(?<![\w\\])r\(\\delta\)|\$r\^2\$|(?<!\w)r²"
+        ),
+        "r is the height of the rail's top r(x) (chapter 14) and the rail's "
+        "harmonics r_n (chapter 3); chapter 13's Floquet modes are counted "
+        "by sigma as in chapter 14, its wavenumber sum by j, the dashpot's "
+        "ramp is written out, and a fit's quality is named in words.",
+        r"modes $\varphi_r = \varphi_0 + 2\pi r/N$, $r = 0, \dots, N-1$; "
+        r"the fit's $r^2$",
+    ),
+    (
+        "s is a complex frequency, not a squared wavenumber",
+        "prose",
+        re.compile(
+            r"s\s*=\s*\\kappa\^2|s_1,\s*s_2|[YZ]\(s(?:_[12])?\)|s_2\s*<\s*0"
+            r"|(?<![\w\\])s\s*=\s*\\pm\s*k_b\^2"
+        ),
+        "s is the complex frequency of e^{st} (chapter 10, s = i omega on "
+        "the axis); the Timoshenko rail's squared wavenumber is psi.",
+        r"the two roots $s_1, s_2$ (in $s = \kappa^2$) of its dispersion",
+    ),
+    (
+        "mu is a Floquet multiplier, not an index",
+        "prose",
+        re.compile(r"_\\mu\b|_\{[^}$]*\\mu\}|\\sum_\\mu|wave \$\\mu\$"),
+        "mu is the factor by which a disturbance grows in one period "
+        "(chapter 10); the wagon pattern's wavenumbers are xi_l = 2 pi l/H.",
+        r"the wavenumbers $\gamma_\mu = 2\pi\mu/H$; harmonic $\omega_{p-\mu}$",
+    ),
+    (
+        "gamma is the tangent stiffness per mass, not a wavenumber",
+        "prose",
+        re.compile(r"\\gamma_\\mu|\\gamma_\{p|wavenumbers?\s+\$\\gamma"),
+        "gamma(t) = dg/dw along the solution (chapter 10); a wavenumber is "
+        "kappa, k_b or (the wagon pattern's) xi_l.",
+        r"with weight $e^{i\gamma_{p-n}\ell_j}$, wavenumbers $\gamma_\mu$",
+    ),
+    (
+        "D is the axle spacing, not a stiffness or a dispersion relation",
+        "prose",
+        re.compile(r"\\mathcal\s*\{?D\b"),
+        "D is the wheel spacing in a bogie (eq. 16); the sleeper's dynamic "
+        "stiffness is S(s, q) (calligraphic), the Timoshenko rail's "
+        "dispersion relation T(kappa) (calligraphic).",
+        r"$\mathcal{D}(s, q) = Ms^2 + A/(1 + A\eta)$",
+    ),
+    (
+        "K is the number of wheels, not a stiffness harmonic",
+        "both",
+        re.compile(
+            r"(?<![\\\w{])K_(?:l\b|\{[kl]|\{-?\d\}\*)"
+            r"|foundation's \$?K\$? and \$?C\b"
+        ),
+        "K wheels at ell_j (chapter 4); the harmonics of the tangent "
+        "stiffness are M gamma_l (and of the tangent damping M nu_l).  "
+        "(Chapter 5's K_n = k_2 + i eta_2 omega_n, the linear law's, is "
+        "left to a later pass: see NOTATION_EDITS.md.)",
+        r"$M\gamma(t) = \sum_l K_l\,e^{il\Omega t}$; K_{0}*p_{1}",
+    ),
+    (
+        "P is the rail coupling, not the contact force",
+        "both",
+        re.compile(
+            r"P\s*=\s*C_H|P_\{j,\s*p\}|P_j\(t\)|(?<![\w\\])P\s*-\s*Q"
+            r"|Q\s*-\s*P\b|P_\{?(?:max|min)|P\s*max\b|P\s*min\b"
+            r"|P\^\{[123]/3\}|P\s*\\ge\s*0|\[P_j\]|(?<![\w\\])P_p\b"
+        ),
+        "P_n is eq. 16's coupling of the rail and the other sleepers; the "
+        "wheel-rail contact force is Q_c (Q at rest).",
+        r"$m_w\ddot z = P - Q$, $P = C_H\max(\delta, 0)^{3/2}$",
+    ),
+    (
+        "theta is the Bloch phase between sleepers, not between cells",
+        "prose",
+        re.compile(
+            r"\\theta(?:_n)?\s*=\s*[^$]*\\Lambda|\\Lambda[^$]*\\theta\b"
+            r"|\\theta\s*\\ell"
+        ),
+        "theta is the phase a disturbance turns by from one sleeper to the "
+        "next (chapter 10); the phase omega Lambda/v from one cell of N "
+        "sleepers to the next is Theta (chapter 13).",
+        r"$\theta = \frac{\omega\Lambda}{v}$, $e^{-i\theta \ell}$",
+    ),
+    (
+        "lambda is not a wavelength",
+        "prose",
+        re.compile(r"wavelengths?\s+\$\\lambda|\\lambda\s*=\s*H/n|D/\\lambda"),
+        "lambda is a Floquet exponent (chapter 10), as well as Newton's "
+        "step (chapter 5) and the Winkler decay (chapter 9); a wavelength "
+        "is written H/n.",
+        r"a harmonic of wavelength $\lambda = H/n$ gets $|\cos(\pi D/\lambda)|$",
+    ),
+    (
+        "n counts harmonics, not sleepers or time steps",
+        "prose",
+        re.compile(
+            r"sleeper \$n\s*\+\s*N_s\$|e\^\{i\\theta\s*n\}|\\delta w_n"
+            r"|_\{n\+1\}|\\mathbf u\}?_n|\(u_n,|e\^\{-inq"
+        ),
+        "n is a harmonic (omega_n, c_n, P_n, F_n); a sleeper is j (chapters "
+        "4 and 13; the paper's own eq. 2 keeps its n) and a time step is "
+        "written t + Delta t.",
+        r"sleeper $n$ moves as $\delta w_n(t) = e^{i\theta n}\ldots$; "
+        r"$\mathbf u_{n+1} = \mathbf u_n + \ldots$",
+    ),
+    (
+        "k counts iterations, not harmonics",
+        "prose",
+        re.compile(
+            r"harmonic \$k\$|(?<![\w\\])[pqs]_k\b|_\{kj\}|\\sum_\{?k\}?\s*p"
+            r"|e\^\{ik\\Omega|(?<![\w\\])k\s*=\s*j\s*\+\s*l|_\{k\s*[-+]\s*j\}"
+        ),
+        "k is the iteration index of eq. 20 (chapter 5); harmonics are n "
+        "(and n' for a second one).",
+        r"Its harmonic $k$ has $p_k\,e^{s_k t}$; $\mathbf{H}_{kj}$",
+    ),
+    (
         "secant stiffness means f(w)/w only",
         "prose",
         None,  # sentence rule, see _secant_misuse
@@ -115,6 +246,34 @@ RULES = [
         "w over the period, falls to 17.1 MN/m.",
     ),
 ]
+
+# TODO(issue 30): chapters 10 and 14 are being rewritten on other branches
+# (10 split into 10 and 11, 14 cut), so the notation pass could not edit them.
+# Their edits are listed in NOTATION_EDITS.md; after merging, the lead applies
+# them and deletes PENDING_RULES, and these rules then check every page.
+PENDING_CHAPTERS = ("10_", "11_", "14_")
+PENDING_REASON = (
+    "TODO(issue 30): notebooks 10_*, 11_* and 14_* still use this symbol "
+    "for another quantity; apply the edits in NOTATION_EDITS.md, then "
+    "delete PENDING_RULES in tests/test_notation.py"
+)
+PENDING_RULES = {
+    "r is not an index, a ramp or a fit statistic",
+    "s is a complex frequency, not a squared wavenumber",
+    "mu is a Floquet multiplier, not an index",
+    "gamma is the tangent stiffness per mass, not a wavenumber",
+    "D is the axle spacing, not a stiffness or a dispersion relation",
+    "K is the number of wheels, not a stiffness harmonic",
+    "P is the rail coupling, not the contact force",
+    "lambda is not a wavelength",
+    "n counts harmonics, not sleepers or time steps",
+    "k counts iterations, not harmonics",
+}
+
+
+def _pending(name, path):
+    return name in PENDING_RULES and path.name.startswith(PENDING_CHAPTERS)
+
 
 SENTENCE = re.compile(r"(?:[^.!?]|[.!?](?!\s|$))+(?:[.!?]|$)")
 FIT = re.compile(r"least[- ]squares|best fits?|regression|fitted", re.I)
@@ -168,10 +327,19 @@ def test_the_book_keeps_the_notation(rule):
     name, where, _, why, _ = rule
     found = []
     for path in PAGES:
+        if _pending(name, path):
+            continue  # see test_the_pending_chapters_keep_the_notation
         for kind, label, text in _texts(path):
             if where in (kind, "both"):
                 found += [f"{label}: ...{hit}..." for hit in _matches(rule, text)]
     assert not found, f"{name} ({why}):\n" + "\n".join(found)
+
+
+@pytest.mark.parametrize("name", sorted(PENDING_RULES))
+def test_the_pending_chapters_keep_the_notation(name):
+    """The rules skipped above, on the chapters they skip (to be fixed)."""
+    assert name in {rule[0] for rule in RULES}, name
+    pytest.skip(PENDING_REASON)
 
 
 def test_the_notation_table_lists_the_conventions():
@@ -184,3 +352,6 @@ def test_the_notation_table_lists_the_conventions():
     assert any(r"\kappa_j" in symbol for symbol in rows)
     assert r"$q$" in rows and r"\omega L/v" in rows[r"$q$"]
     assert any(r"\rho_0" in symbol and r"\rho_n" in symbol for symbol in rows)
+    # issue 30's pass: each meaning moved off a clashing symbol has a row
+    for moved in (r"$h$", r"\Theta", r"$\sigma$", r"\xi_l", r"Q_c", r"\gamma(t)"):
+        assert any(moved in symbol for symbol in rows), moved

@@ -194,7 +194,25 @@ _NOTATION = (
     (r"$P_n,\ F_n$", "rail coupling and train load of harmonic $n$, eq. (16)", "1/s², m/s²"),
     (r"$\mathcal{F}_{nk}$", r"harmonic $n$ of $g$ at iterate $k$, eq. (20) ($\mathcal{F}_n$ at the "
      "solution); not the load $F_n$", "m/s²"),
-    (r"$m,\ k$", "number of harmonics kept, iteration index", "–"),
+    (r"$m,\ k$", "number of harmonics kept, iteration index (a harmonic is $n$, or $n'$; "
+     "never $k$)", "–"),
+    (r"$\gamma(t),\ \nu(t)$", r"tangent stiffness and damping per sleeper mass along a "
+     r"solution, $\partial g/\partial w$ and $\partial g/\partial w'$; harmonics "
+     r"$\gamma_l,\ \nu_l$ (ch. 10)", "1/s², 1/s"),
+    (r"$\lambda,\ \mu,\ \theta$", r"Floquet exponent, multiplier $\mu = e^{\lambda T}$ and "
+     r"Bloch phase from one sleeper to the next of a disturbance (ch. 10); $\lambda$ is also "
+     r"Newton's step (ch. 5) and the Winkler decay (ch. 9), never a wavelength ($H/n$)",
+     "1/s, –, rad"),
+    (r"$s$", r"complex frequency of a disturbance $e^{st}$ ($s = i\omega$ on the axis), ch. 10",
+     "1/s"),
+    (r"$N,\ \Lambda,\ \Theta$", r"sleepers in a cell, its length $NL$, the phase "
+     r"$\omega\Lambda/v = Nq$ from one cell to the next (ch. 13)", "–, m, rad"),
+    (r"$\sigma$", "Floquet mode of a cell of $N$ sleepers, $0 \\le \\sigma < N$ (ch. 13, 14)",
+     "–"),
+    (r"$h$", "gap between a hanging sleeper and its ballast (ch. 13)", "m"),
+    (r"$r(x),\ Q_c$", r"height of the rail's top above its nominal line; wheel–rail contact "
+     r"force, $Q_c = Q$ at rest (ch. 14)", "m, N"),
+    (r"$\xi_l$", r"wavenumbers $2\pi l/H$ of the wagon pattern (ch. 14)", "1/m"),
     (r"$N_0$", r"split of eq. (21): harmonics $\lvert n\rvert \le N_0$ use its first branch, the others "
      "its second", "–"),
 )
