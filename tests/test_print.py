@@ -213,3 +213,68 @@ def test_css_reader_rejects_a_style_without_the_rules():
     assert declared(block, ".bd-main .bd-content table", "break-inside") == "avoid"
     assert declared(block, "div.highlight", "break-inside") is None
     assert declared(block, "div.cell_output img", "height") is None
+
+
+# ----------------------------------------- near-empty pages, split boxes ---
+
+MM_PER_INCH = 25.4
+CAPTION_MM = 3 * 1.5 * ROOT_FONT_PX / CSS_PX_PER_INCH * MM_PER_INCH  # 3 lines
+
+
+def column_height_mm(print_pdf):
+    """Height of the printed text column (A4 less the margins), mm."""
+    return (print_pdf.A4["paperHeight"] - 2 * print_pdf.MARGIN) * MM_PER_INCH
+
+
+def figure_fits_under_text(block, text_share=0.4):
+    """Whether the tallest printed figure, with a three-line caption, fits on
+    the page under `text_share` of a page of text (a heading, a paragraph and
+    a short code cell).  A figure is kept whole (break-inside: avoid): one
+    that did not fit went to the next page and left the rest of this one
+    empty (the explorer's snapshot, Fig. 5.2, Sec. 7.4's figure, the loss of
+    contact in the wheel chapter; at 200 mm, three pages of the PDF)."""
+    height = declared(block, "div.cell_output img", "max-height")
+    assert height and height.endswith("mm"), f"print figure max-height: {height}"
+    room = (1 - text_share) * column_height_mm(_print_pdf())
+    return float(height[:-2]) + CAPTION_MM <= room
+
+
+def short_outputs_move_whole(block):
+    """Whether a short output box is moved whole rather than split.
+
+    An output box splits only between lines, four on either side (orphans
+    and widows), so a box of seven lines or fewer cannot split; but it must
+    be allowed to leave its code cell (no break-before: avoid at the output
+    box), or Chromium, with no allowed break before the box, splits it
+    anyway: four lines of a five-line box on one page, one on the next."""
+    lines = [declared(block, "div.output pre", p) for p in ("orphans", "widows")]
+    return (all(n is not None and int(n) >= 4 for n in lines)
+            and declared(block, "div.cell_output > div.output", "break-before") != "avoid")
+
+
+def test_a_tall_figure_fits_under_some_text():
+    assert figure_fits_under_text(print_block(CSS.read_text()))
+    # The rule it replaced (200 mm) fails the check.
+    assert not figure_fits_under_text(print_block(
+        "@media print { div.cell_output img { max-height: 200mm; } }"))
+
+
+def test_a_short_output_box_is_not_split_across_pages():
+    assert short_outputs_move_whole(print_block(CSS.read_text()))
+    old = """@media print {
+      div.output pre { orphans: 4; widows: 4; }
+      div.cell_input > div, div.cell_output > div.output { break-before: avoid; }
+    }"""
+    assert not short_outputs_move_whole(print_block(old))
+    assert not short_outputs_move_whole(print_block(
+        "@media print { div.output pre { orphans: 2; widows: 2; } }"))
+
+
+def test_folded_code_does_not_print():
+    # A cell tagged hide-input is rendered as a closed <details class="hide">
+    # holding the code; on paper it is dropped whole (its outputs print).
+    block = print_block(CSS.read_text())
+    assert declared(block, "details.hide:not([open])", "display") == "none"
+    assert declared(print_block(
+        "@media print { details.hide { display: block; } }"),
+        "details.hide:not([open])", "display") is None
