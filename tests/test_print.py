@@ -278,3 +278,41 @@ def test_folded_code_does_not_print():
     assert declared(print_block(
         "@media print { details.hide { display: block; } }"),
         "details.hide:not([open])", "display") is None
+
+
+# ------------------------------------------------- folded table-building ---
+
+HIDDEN = {"hide-input", "remove-input", "remove-cell", "hide-cell"}
+LONG_CELL = 15  # lines: issue 30's "longer than about 15 lines"
+_TABLE_ROW = re.compile(r"""^\s*(f?["']\|)""", re.M)  # a Markdown table row
+
+
+def unfolded_table_cells(notebook):
+    """Indices of visible code cells over LONG_CELL lines that build a
+    Markdown table row by row: their printed code is scaffolding (column
+    headers, f-string formats), not the computation, and fills pages."""
+    found = []
+    for index, cell in enumerate(notebook["cells"]):
+        source = "".join(cell["source"])
+        tags = set(cell.get("metadata", {}).get("tags", []))
+        if (cell["cell_type"] == "code" and not tags & HIDDEN
+                and len(source.splitlines()) > LONG_CELL and _TABLE_ROW.search(source)):
+            found.append(index)
+    return found
+
+
+def test_long_table_building_cells_of_chapters_1_to_9_are_folded():
+    problems = []
+    for path in sorted(BOOK.glob("0*.ipynb")):
+        cells = unfolded_table_cells(json.loads(path.read_text()))
+        problems += [f"{path.name} cell {i}" for i in cells]
+    assert not problems, ("long table-building code printed (tag the cell "
+                          "hide-input):\n" + "\n".join(problems))
+    rows = ["rows = [\n", '    "| a | b |",\n', "]\n"] + [f"x{i} = {i}\n" for i in range(13)]
+    made_up = {"cells": [
+        {"cell_type": "code", "metadata": {}, "source": rows},
+        {"cell_type": "code", "metadata": {"tags": ["hide-input"]}, "source": rows},
+        {"cell_type": "code", "metadata": {}, "source": rows[:10]},
+        {"cell_type": "code", "metadata": {}, "source": ["rows = []\n"] + rows[2:] + ["y = 1"]},
+    ]}
+    assert unfolded_table_cells(made_up) == [0]
