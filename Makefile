@@ -10,7 +10,8 @@
 #                _build/screenshots), and the student edition checked for leaked solutions
 #   make book-student  the book without solutions, into _build/student/_build/html
 #   make pdf     the book as PDF, solutions in an appendix, and the student edition's
-#                PDF, into _build/pdf (headless Chromium prints a single-page build)
+#                PDF, into _build/pdf (headless Chromium prints a single-page build);
+#                fails if a chapter prints on more than 25 pages
 #   make lab     JupyterLab on the book's notebooks with the project's kernel
 #   make test-roundoff  nbval over every notebook with every Track's masses,
 #                stiffnesses and dampings changed by 1e-12 and two BLAS threads:
@@ -118,8 +119,12 @@ book-student: $(STAMP) $(MATHJAX)
 
 # The PDFs: each edition built from the stored outputs on one page (Sphinx's
 # singlehtml builder) and printed by headless Chromium (tools/print_pdf.py
-# says why this route and not LaTeX).  About a minute for both.
+# says why this route and not LaTeX).  About a minute for both.  The book's
+# pages per chapter are then counted (tools/chapter_pages.py, which also
+# lists the near-empty pages): a chapter over CHAPTER_PAGES fails the target,
+# the page budget of a chapter a lecturer can teach (issue 30).
 PDF         := _build/pdf
+CHAPTER_PAGES ?= 25
 
 pdf: $(STAMP) $(MATHJAX)
 	$(call edition,appendix,$(PDF)/book,singlehtml)
@@ -128,6 +133,7 @@ pdf: $(STAMP) $(MATHJAX)
 	$(PY) tools/editions.py check-student $(PDF)/student/_build/singlehtml
 	$(PY) tools/print_pdf.py $(PDF)/student/_build/singlehtml $(PDF)/railtrack-book-student.pdf
 	@echo "The PDFs are $(CURDIR)/$(PDF)/railtrack-book.pdf and railtrack-book-student.pdf"
+	$(PY) tools/chapter_pages.py --limit $(CHAPTER_PAGES) $(PDF)/railtrack-book.pdf
 
 # JupyterLab on this machine only (127.0.0.1), the venv's kernel; Ctrl-C stops it.
 # Offline: no extension manager asking PyPI, no news, no update check.

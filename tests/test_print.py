@@ -213,3 +213,143 @@ def test_css_reader_rejects_a_style_without_the_rules():
     assert declared(block, ".bd-main .bd-content table", "break-inside") == "avoid"
     assert declared(block, "div.highlight", "break-inside") is None
     assert declared(block, "div.cell_output img", "height") is None
+
+
+# ----------------------------------------- near-empty pages, split boxes ---
+
+MM_PER_INCH = 25.4
+CAPTION_MM = 3 * 1.5 * ROOT_FONT_PX / CSS_PX_PER_INCH * MM_PER_INCH  # 3 lines
+
+
+def column_height_mm(print_pdf):
+    """Height of the printed text column (A4 less the margins), mm."""
+    return (print_pdf.A4["paperHeight"] - 2 * print_pdf.MARGIN) * MM_PER_INCH
+
+
+def figure_fits_under_text(block, text_share=0.4):
+    """Whether the tallest printed figure, with a three-line caption, fits on
+    the page under `text_share` of a page of text (a heading, a paragraph and
+    a short code cell).  A figure is kept whole (break-inside: avoid): one
+    that did not fit went to the next page and left the rest of this one
+    empty (the explorer's snapshot, Fig. 5.2, Sec. 7.4's figure, the loss of
+    contact in the wheel chapter; at 200 mm, three pages of the PDF)."""
+    height = declared(block, "div.cell_output img", "max-height")
+    assert height and height.endswith("mm"), f"print figure max-height: {height}"
+    room = (1 - text_share) * column_height_mm(_print_pdf())
+    return float(height[:-2]) + CAPTION_MM <= room
+
+
+def short_outputs_move_whole(block):
+    """Whether a printed output box is kept whole rather than split.
+
+    Chromium split a five-line box four lines on one page, one on the next,
+    although widows and orphans (4) forbid it; break-inside: avoid on the
+    box's text keeps it whole, and it needs a break allowed before the box:
+    no break-before: avoid at the output (which kept it with its code), nor
+    at its inner blocks, whose avoid passes up to the box's start (the
+    code boxes' rule, div.highlight > pre, is undone for outputs)."""
+    inner = ("div.cell_output div.output > div.highlight", "div.cell_output div.highlight > pre")
+    return (declared(block, "div.output pre", "break-inside") == "avoid"
+            and declared(block, "div.cell_output > div.output", "break-before") != "avoid"
+            and all(declared(block, s, "break-before") == "auto" for s in inner))
+
+
+def test_a_tall_figure_fits_under_some_text():
+    assert figure_fits_under_text(print_block(CSS.read_text()))
+    # The rule it replaced (200 mm) fails the check.
+    assert not figure_fits_under_text(print_block(
+        "@media print { div.cell_output img { max-height: 200mm; } }"))
+
+
+def test_a_short_output_box_is_not_split_across_pages():
+    assert short_outputs_move_whole(print_block(CSS.read_text()))
+    old = """@media print {
+      div.output pre { orphans: 4; widows: 4; }
+      div.cell_input > div, div.cell_output > div.output { break-before: avoid; }
+    }"""
+    assert not short_outputs_move_whole(print_block(old))
+    assert not short_outputs_move_whole(print_block(
+        "@media print { div.output pre { break-inside: avoid; }"
+        " div.cell_output > div.output { break-before: avoid; } }"))
+    # Kept whole but with no break allowed before it (this commit's first
+    # try): a folded cell's box pulled the figure above it to the next page.
+    assert not short_outputs_move_whole(print_block(
+        "@media print { div.output pre { break-inside: avoid; }"
+        " div.highlight > pre { break-before: avoid; } }"))
+
+
+MAX_OUTPUT_LINES = 20  # about a third of a printed page at 13 px
+
+
+def long_outputs(notebook, limit=MAX_OUTPUT_LINES):
+    """(cell, lines) of every printed text output longer than `limit` lines."""
+    counts = {}
+    for index, _ in printed_output_lines(notebook):
+        counts[index] = counts.get(index, 0) + 1
+    return [(i, n) for i, n in counts.items() if n > limit]
+
+
+def test_output_boxes_kept_whole_are_short():
+    # An output box is kept whole on paper (print rules): a long one moved
+    # to the next page would leave most of a page empty before it.
+    problems = []
+    for path in sorted(BOOK.glob("*.ipynb")):
+        problems += [f"{path.name} cell {i}: {n} lines"
+                     for i, n in long_outputs(json.loads(path.read_text()))]
+    assert not problems, (f"printed outputs over {MAX_OUTPUT_LINES} lines:\n"
+                          + "\n".join(problems))
+    made_up = {"cells": [
+        {"cell_type": "code", "metadata": {}, "source": "", "outputs": [
+            {"output_type": "stream", "name": "stdout", "text": ["x\n"] * 21}]},
+        {"cell_type": "code", "metadata": {}, "source": "", "outputs": [
+            {"output_type": "stream", "name": "stdout", "text": ["x\n"] * 20}]},
+    ]}
+    assert long_outputs(made_up) == [(0, 21)]
+
+
+def test_folded_code_does_not_print():
+    # A cell tagged hide-input is rendered as a closed <details class="hide">
+    # holding the code; on paper it is dropped whole (its outputs print).
+    block = print_block(CSS.read_text())
+    assert declared(block, "details.hide:not([open])", "display") == "none"
+    assert declared(print_block(
+        "@media print { details.hide { display: block; } }"),
+        "details.hide:not([open])", "display") is None
+
+
+# ------------------------------------------------- folded table-building ---
+
+HIDDEN = {"hide-input", "remove-input", "remove-cell", "hide-cell"}
+LONG_CELL = 15  # lines: issue 30's "longer than about 15 lines"
+_TABLE_ROW = re.compile(r"""^\s*(f?["']\|)""", re.M)  # a Markdown table row
+
+
+def unfolded_table_cells(notebook):
+    """Indices of visible code cells over LONG_CELL lines that build a
+    Markdown table row by row: their printed code is scaffolding (column
+    headers, f-string formats), not the computation, and fills pages."""
+    found = []
+    for index, cell in enumerate(notebook["cells"]):
+        source = "".join(cell["source"])
+        tags = set(cell.get("metadata", {}).get("tags", []))
+        if (cell["cell_type"] == "code" and not tags & HIDDEN
+                and len(source.splitlines()) > LONG_CELL and _TABLE_ROW.search(source)):
+            found.append(index)
+    return found
+
+
+def test_long_table_building_cells_of_chapters_1_to_9_are_folded():
+    problems = []
+    for path in sorted(BOOK.glob("0*.ipynb")):
+        cells = unfolded_table_cells(json.loads(path.read_text()))
+        problems += [f"{path.name} cell {i}" for i in cells]
+    assert not problems, ("long table-building code printed (tag the cell "
+                          "hide-input):\n" + "\n".join(problems))
+    rows = ["rows = [\n", '    "| a | b |",\n', "]\n"] + [f"x{i} = {i}\n" for i in range(13)]
+    made_up = {"cells": [
+        {"cell_type": "code", "metadata": {}, "source": rows},
+        {"cell_type": "code", "metadata": {"tags": ["hide-input"]}, "source": rows},
+        {"cell_type": "code", "metadata": {}, "source": rows[:10]},
+        {"cell_type": "code", "metadata": {}, "source": ["rows = []\n"] + rows[2:] + ["y = 1"]},
+    ]}
+    assert unfolded_table_cells(made_up) == [0]
