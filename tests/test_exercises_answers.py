@@ -372,6 +372,16 @@ ANSWERS = {
          r"compress|Hertz|contact|δ|\\delta"),
         ("contact stiffness at the static load", r"at the static load (\d+) MN/m", "MN/m", 0.5),
     ],
+    "15.1": [
+        ("(a): the factor at 0.8 v_cr", r"factor at 0\.8 v_cr: ([\d.]+)", "bare", 0.0005,
+         r"0\.8|factor"),
+        ("(b): the fraction for a dip 10 % deeper", r"10 % deeper at v/v_cr = ([\d.]+)", "bare",
+         0.0005, r"v/v_cr|v_\{cr\}|fraction"),
+    ],
+    "15.2": [
+        ("critical speed estimated by the smeared formula", r"estimated v_cr = ([\d.]+) m/s",
+         "m/s", 0.05),
+    ],
     "16.1": [
         ("paper's track: steps to 0.1 %",
          r"paper's track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0),
