@@ -84,7 +84,9 @@ def _text(name):
     ],
 )
 def test_the_wrong_reasons_are_gone(page, wrong):
-    assert wrong not in _text(page)
+    # line breaks and indents do not count: a reflowed glossary entry is
+    # the same wrong sentence
+    assert " ".join(wrong.split()) not in " ".join(_text(page).split())
 
 
 @pytest.mark.parametrize(
