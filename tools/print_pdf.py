@@ -28,6 +28,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))  # also when imported b
 import browser  # noqa: E402  (the local server and headless Chromium, shared with the browser test)
 
 LOAD_TIMEOUT = 300  # s
+PRINT_TIMEOUT = 900  # s, for the one printToPDF request
 A4 = {"paperWidth": 8.27, "paperHeight": 11.69}  # inches
 MARGIN = 0.55  # inches, each side
 FOOTER = (
@@ -66,6 +67,10 @@ def print_pdf(html_dir: Path, out: Path) -> int:
         # One page holds the whole book: MathJax needs longer than on a chapter.
         driver.set_page_load_timeout(LOAD_TIMEOUT)
         driver.set_script_timeout(LOAD_TIMEOUT)
+        # Printing the whole book is one request to chromedriver; selenium's
+        # default of 120 s was too short on a busy two-core machine (measured:
+        # the print timed out while other notebooks ran).
+        driver.command_executor.client_config.timeout = PRINT_TIMEOUT
         state = browser.load_page(driver, base + page)
         if state["mathjax"] != "ok":
             raise SystemExit(f"MathJax did not typeset the page: {state['mathjax']}")
