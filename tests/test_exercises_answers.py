@@ -349,7 +349,7 @@ ANSWERS = {
     ],
     "14.1": [
         ("the increment's ratio when the dip is twice as deep",
-         r"P max - Q: [\d.]+ kN, then [\d.]+ kN: ratio ([\d.]+)", "ratio", 0.005,
+         r"Q_c max - Q: [\d.]+ kN, then [\d.]+ kN: ratio ([\d.]+)", "ratio", 0.005,
          r"increment|doubl|twice as deep"),
     ],
     "14.2": [

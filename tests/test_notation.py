@@ -121,13 +121,15 @@ RULES = [
         re.compile(
             r"\\varphi_r\b|\\kappa_r\b|\\sum_r\b|(?<![\w\\])r = 0, \\dots"
             r"|(?<![\w\\])r\(\\delta\)|\$r\^2\$|(?<!\w)r²"
+            r"|w\^\{\(r\)\}|e\^\{-irq\}|sleeper \$r\$"
         ),
         "r is the height of the rail's top r(x) (chapter 14) and the rail's "
         "harmonics r_n (chapter 3); chapter 13's Floquet modes are counted "
         "by sigma as in chapter 14, its wavenumber sum by j, the dashpot's "
-        "ramp is written out, and a fit's quality is named in words.",
+        "ramp is written out, a fit's quality is named in words, and "
+        "chapter 11's sleeper is j, as in chapter 13.",
         r"modes $\varphi_r = \varphi_0 + 2\pi r/N$, $r = 0, \dots, N-1$; "
-        r"the fit's $r^2$",
+        r"the fit's $r^2$; sleeper $r$ moves as $w^{(r)}(t) = w(t - rL/v)$",
     ),
     (
         "s is a complex frequency, not a squared wavenumber",
@@ -136,7 +138,7 @@ RULES = [
             r"s\s*=\s*\\kappa\^2|s_1,\s*s_2|[YZ]\(s(?:_[12])?\)|s_2\s*<\s*0"
             r"|(?<![\w\\])s\s*=\s*\\pm\s*k_b\^2"
         ),
-        "s is the complex frequency of e^{st} (chapter 10, s = i omega on "
+        "s is the complex frequency of e^{st} (chapter 11, s = i omega on "
         "the axis); the Timoshenko rail's squared wavenumber is psi.",
         r"the two roots $s_1, s_2$ (in $s = \kappa^2$) of its dispersion",
     ),
@@ -145,25 +147,51 @@ RULES = [
         "prose",
         re.compile(r"_\\mu\b|_\{[^}$]*\\mu\}|\\sum_\\mu|wave \$\\mu\$"),
         "mu is the factor by which a disturbance grows in one period "
-        "(chapter 10); the wagon pattern's wavenumbers are xi_l = 2 pi l/H.",
+        "(chapter 11); the wagon pattern's wavenumbers are xi_l = 2 pi l/H.",
         r"the wavenumbers $\gamma_\mu = 2\pi\mu/H$; harmonic $\omega_{p-\mu}$",
+    ),
+    (
+        "sigma counts a cell's Floquet modes, not a Floquet exponent",
+        "prose",
+        re.compile(
+            r"e\^\{\\sigma\s*[tT]\}|\\sigma\s*\+\s*i\\Omega"
+            r"|\\mathbf\{H\}\(\\sigma|exponent \$\\sigma"
+        ),
+        "sigma numbers the Floquet modes of a cell of N sleepers (chapters "
+        "13 and 14); the exponent of a disturbance e^{lambda t} is lambda, "
+        "with the multiplier mu = e^{lambda T} (chapter 11).",
+        r"grows as $e^{\sigma t}$ (the Floquet exponent $\sigma$; "
+        r"$\mu = e^{\sigma T}$), $\mathbf{H}(\sigma + i\Omega;\theta)$",
+    ),
+    (
+        "nu is the tangent damping per mass, not an index",
+        "prose",
+        re.compile(
+            r"\\kappa_\\nu|\\sum_\\nu\b|wave \$\\nu\$|_\{p\s*-\s*\\nu\}"
+        ),
+        "nu(t) = dg/dw' along the solution, harmonics nu_l (chapter 11); "
+        "the wagon pattern's wavenumbers are xi_l = 2 pi l/H (chapter 14).",
+        r"wavenumbers $\kappa_\nu = 2\pi\nu/H$; the same wave $\nu$ "
+        r"passes at $\omega_{p-\nu}$; $\sum_\nu$",
     ),
     (
         "gamma is the tangent stiffness per mass, not a wavenumber",
         "prose",
         re.compile(r"\\gamma_\\mu|\\gamma_\{p|wavenumbers?\s+\$\\gamma"),
-        "gamma(t) = dg/dw along the solution (chapter 10); a wavenumber is "
+        "gamma(t) = dg/dw along the solution (chapter 11); a wavenumber is "
         "kappa, k_b or (the wagon pattern's) xi_l.",
         r"with weight $e^{i\gamma_{p-n}\ell_j}$, wavenumbers $\gamma_\mu$",
     ),
     (
         "D is the axle spacing, not a stiffness or a dispersion relation",
         "prose",
-        re.compile(r"\\mathcal\s*\{?D\b"),
+        re.compile(r"\\mathcal\s*\{?D\b|(?<![\w\\])Z\(s,\s*q\)|force \$Zu\$"),
         "D is the wheel spacing in a bogie (eq. 16); the sleeper's dynamic "
         "stiffness is S(s, q) (calligraphic), the Timoshenko rail's "
-        "dispersion relation T(kappa) (calligraphic).",
-        r"$\mathcal{D}(s, q) = Ms^2 + A/(1 + A\eta)$",
+        "dispersion relation T(kappa) (calligraphic); Z is chapter 14's "
+        "sum over the supports.",
+        r"$\mathcal{D}(s, q) = Ms^2 + A/(1 + A\eta)$; "
+        r"$Z(s, q) = Ms^2 + \ldots$, a force $Zu$",
     ),
     (
         "K is the number of wheels, not a stiffness harmonic",
@@ -175,7 +203,7 @@ RULES = [
         "K wheels at ell_j (chapter 4); the harmonics of the tangent "
         "stiffness are M gamma_l (and of the tangent damping M nu_l).  "
         "(Chapter 5's K_n = k_2 + i eta_2 omega_n, the linear law's, is "
-        "left to a later pass: see NOTATION_EDITS.md.)",
+        "left to a later pass.)",
         r"$M\gamma(t) = \sum_l K_l\,e^{il\Omega t}$; K_{0}*p_{1}",
     ),
     (
@@ -198,7 +226,7 @@ RULES = [
             r"|\\theta\s*\\ell"
         ),
         "theta is the phase a disturbance turns by from one sleeper to the "
-        "next (chapter 10); the phase omega Lambda/v from one cell of N "
+        "next (chapter 11); the phase omega Lambda/v from one cell of N "
         "sleepers to the next is Theta (chapter 13).",
         r"$\theta = \frac{\omega\Lambda}{v}$, $e^{-i\theta \ell}$",
     ),
@@ -206,7 +234,7 @@ RULES = [
         "lambda is not a wavelength",
         "prose",
         re.compile(r"wavelengths?\s+\$\\lambda|\\lambda\s*=\s*H/n|D/\\lambda"),
-        "lambda is a Floquet exponent (chapter 10), as well as Newton's "
+        "lambda is a Floquet exponent (chapter 11), as well as Newton's "
         "step (chapter 5) and the Winkler decay (chapter 9); a wavelength "
         "is written H/n.",
         r"a harmonic of wavelength $\lambda = H/n$ gets $|\cos(\pi D/\lambda)|$",
@@ -246,34 +274,6 @@ RULES = [
         "w over the period, falls to 17.1 MN/m.",
     ),
 ]
-
-# TODO(issue 30): chapters 10 and 14 are being rewritten on other branches
-# (10 split into 10 and 11, 14 cut), so the notation pass could not edit them.
-# Their edits are listed in NOTATION_EDITS.md; after merging, the lead applies
-# them and deletes PENDING_RULES, and these rules then check every page.
-PENDING_CHAPTERS = ("10_", "11_", "14_")
-PENDING_REASON = (
-    "TODO(issue 30): notebooks 10_*, 11_* and 14_* still use this symbol "
-    "for another quantity; apply the edits in NOTATION_EDITS.md, then "
-    "delete PENDING_RULES in tests/test_notation.py"
-)
-PENDING_RULES = {
-    "r is not an index, a ramp or a fit statistic",
-    "s is a complex frequency, not a squared wavenumber",
-    "mu is a Floquet multiplier, not an index",
-    "gamma is the tangent stiffness per mass, not a wavenumber",
-    "D is the axle spacing, not a stiffness or a dispersion relation",
-    "K is the number of wheels, not a stiffness harmonic",
-    "P is the rail coupling, not the contact force",
-    "lambda is not a wavelength",
-    "n counts harmonics, not sleepers or time steps",
-    "k counts iterations, not harmonics",
-}
-
-
-def _pending(name, path):
-    return name in PENDING_RULES and path.name.startswith(PENDING_CHAPTERS)
-
 
 SENTENCE = re.compile(r"(?:[^.!?]|[.!?](?!\s|$))+(?:[.!?]|$)")
 FIT = re.compile(r"least[- ]squares|best fits?|regression|fitted", re.I)
@@ -327,19 +327,10 @@ def test_the_book_keeps_the_notation(rule):
     name, where, _, why, _ = rule
     found = []
     for path in PAGES:
-        if _pending(name, path):
-            continue  # see test_the_pending_chapters_keep_the_notation
         for kind, label, text in _texts(path):
             if where in (kind, "both"):
                 found += [f"{label}: ...{hit}..." for hit in _matches(rule, text)]
     assert not found, f"{name} ({why}):\n" + "\n".join(found)
-
-
-@pytest.mark.parametrize("name", sorted(PENDING_RULES))
-def test_the_pending_chapters_keep_the_notation(name):
-    """The rules skipped above, on the chapters they skip (to be fixed)."""
-    assert name in {rule[0] for rule in RULES}, name
-    pytest.skip(PENDING_REASON)
 
 
 def test_the_notation_table_lists_the_conventions():
@@ -350,8 +341,12 @@ def test_the_notation_table_lists_the_conventions():
     assert r"$\beta$" in rows and "nothing else" in rows[r"$\beta$"]
     assert r"$k_b$" in rows and r"k_b^4 = \rho S\omega^2/EI" in rows[r"$k_b$"]
     assert any(r"\kappa_j" in symbol for symbol in rows)
+    # one Floquet exponent book-wide: lambda (chapter 11), sigma a cell's mode
+    floquet = next(row for symbol, row in rows.items() if r"\lambda" in symbol)
+    assert "Floquet exponent" in floquet and "Floquet mode" in rows[r"$\sigma$"]
     assert r"$q$" in rows and r"\omega L/v" in rows[r"$q$"]
     assert any(r"\rho_0" in symbol and r"\rho_n" in symbol for symbol in rows)
     # issue 30's pass: each meaning moved off a clashing symbol has a row
-    for moved in (r"$h$", r"\Theta", r"$\sigma$", r"\xi_l", r"Q_c", r"\gamma(t)"):
+    for moved in (r"$h$", r"\Theta", r"$\sigma$", r"\xi_l", r"Q_c", r"\gamma(t)",
+                  r"\mathcal{S}(s, q)", r"$\psi$"):
         assert any(moved in symbol for symbol in rows), moved

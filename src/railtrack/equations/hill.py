@@ -1,30 +1,30 @@
 """The linearised equations about a periodic solution: Hill's matrix of eq. (17).
 
-A periodic solution y_0(t) of eq. (17) is a travelling wave: sleeper n moves
-as y_n(t) = y_0(t - nL/v).  A small disturbance of it has the Floquet–Bloch
-form
+In the book's notation (chapter 11 and the notation table of chapter 1): a
+periodic solution y(t) of eq. (17) is a travelling wave, sleeper j moves as
+y(t - jL/v).  A small disturbance of it has the Floquet–Bloch form
 
-    dy_n(t) = e^{lambda t} e^{i theta n} sum_k p_k e^{i k Omega (t - nL/v)},
+    dy_j(t) = e^{lambda t} e^{i theta j} sum_n p_n e^{i n Omega (t - jL/v)},
 
 with the Floquet exponent lambda, the Bloch phase theta per sleeper and
-Omega = 2 pi v / H.  Harmonic k of the disturbance is then one complex
-frequency, s_k = lambda + i k Omega, with the phase q_k = k Omega L / v - theta
+Omega = 2 pi v / H.  Harmonic n of the disturbance is then one complex
+frequency, s_n = lambda + i n Omega, with the phase q = n Omega L / v - theta
 from one sleeper to the next, and the rail answers it with the receptance of
 eq. (3) continued to that complex frequency and phase (`complex_receptance`).
 Eliminating the rail and the pad as in eqs. (4)-(8) leaves, for the sleeper,
-the dynamic stiffness
+the dynamic stiffness (the book's calligraphic S)
 
-    D(s, q) = M s^2 + A(s) / (1 + A(s) eta(s, q)),     A(s) = k1 + eta1 s,
+    S(s, q) = M s^2 + A(s) / (1 + A(s) eta(s, q)),     A(s) = k1 + eta1 s,
 
-and linearising the foundation law f(w, w') about y_0 adds the harmonics
-K_l, C_l of its tangent stiffness df/dw and damping df/dw' along y_0.  The
-disturbance exists where Hill's matrix
+and linearising the foundation law f(w, w') about y adds the harmonics
+M gamma_l, M nu_l of its tangent stiffness df/dw and damping df/dw' along y
+(in the code below, K_l and C_l).  The disturbance exists where Hill's matrix
 
-    H(lambda; theta)_{kj} = delta_kj D(s_k, q_k) + K_{k-j} + s_j C_{k-j},
-    k, j = -m..m,
+    H(lambda; theta)_{nn'} = delta_{nn'} S(s_n, q) + M gamma_{n-n'} + s_{n'} M nu_{n-n'},
+    n, n' = -m..m,
 
 is singular.  At lambda = 0, theta = 0 it is M times the Jacobian of eq. (17)
-(`railtrack.equations.aft_jacobian`): s_k = i omega_k and q_k = omega_k L / v
+(`railtrack.equations.aft_jacobian`): s_n = i omega_n and q = omega_n L / v
 are the paper's frequencies and phases.  `railtrack.solvers.floquet` finds
 the exponents.
 """
@@ -135,7 +135,7 @@ def complex_receptance(passage: Passage, s: ArrayLike, q: ArrayLike) -> np.ndarr
 
 
 def condensed_stiffness(passage: Passage, s: ArrayLike, q: ArrayLike) -> np.ndarray:
-    """D(s, q) = M s^2 + A / (1 + A eta(s, q)): the sleeper with rail and pad condensed [N/m].
+    """S(s, q) = M s^2 + A / (1 + A eta(s, q)): the sleeper with rail and pad condensed [N/m].
 
     The force on a sleeper per unit displacement e^{s t} of every sleeper,
     with phase q from one to the next, the foundation left out; written as
@@ -219,7 +219,7 @@ def hill_matrix(passage: Passage, toeplitz: np.ndarray, exponent: ArrayLike,
     omega = passage.fundamental_frequency
     s = np.asarray(exponent, dtype=complex)[..., None] + 1j * omega * k
     q = k * omega * passage.sleeper_spacing / passage.speed - np.asarray(theta)[..., None]
-    # D(s, q) of s and q unbroadcast: the rail's bending functions depend on s alone,
+    # S(s, q) of s and q unbroadcast: the rail's bending functions depend on s alone,
     # shared by all the phases of a contour's stack
     stiffness = condensed_stiffness(passage, s, q)
     shape = np.broadcast_shapes(s.shape, q.shape)

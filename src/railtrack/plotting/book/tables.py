@@ -198,13 +198,15 @@ _NOTATION = (
      "never $k$)", "–"),
     (r"$\gamma(t),\ \nu(t)$", r"tangent stiffness and damping per sleeper mass along a "
      r"solution, $\partial g/\partial w$ and $\partial g/\partial w'$; harmonics "
-     r"$\gamma_l,\ \nu_l$ (ch. 10)", "1/s², 1/s"),
+     r"$\gamma_l,\ \nu_l$ (ch. 11)", "1/s², 1/s"),
     (r"$\lambda,\ \mu,\ \theta$", r"Floquet exponent, multiplier $\mu = e^{\lambda T}$ and "
-     r"Bloch phase from one sleeper to the next of a disturbance (ch. 10); $\lambda$ is also "
+     r"Bloch phase from one sleeper to the next of a disturbance (ch. 11); $\lambda$ is also "
      r"Newton's step (ch. 5) and the Winkler decay (ch. 9), never a wavelength ($H/n$)",
      "1/s, –, rad"),
-    (r"$s$", r"complex frequency of a disturbance $e^{st}$ ($s = i\omega$ on the axis), ch. 10",
+    (r"$s$", r"complex frequency of a disturbance $e^{st}$ ($s = i\omega$ on the axis), ch. 11",
      "1/s"),
+    (r"$\mathcal{S}(s, q)$", r"dynamic stiffness of one sleeper with its pad and the rail, "
+     r"all moving as $e^{st}e^{-ijq}$ at sleeper $j$ (ch. 11)", "N/m"),
     (r"$N,\ \Lambda,\ \Theta$", r"sleepers in a cell, its length $NL$, the phase "
      r"$\omega\Lambda/v = Nq$ from one cell to the next (ch. 13)", "–, m, rad"),
     (r"$\sigma$", "Floquet mode of a cell of $N$ sleepers, $0 \\le \\sigma < N$ (ch. 13, 14)",
@@ -213,6 +215,8 @@ _NOTATION = (
     (r"$r(x),\ Q_c$", r"height of the rail's top above its nominal line; wheel–rail contact "
      r"force, $Q_c = Q$ at rest (ch. 14)", "m, N"),
     (r"$\xi_l$", r"wavenumbers $2\pi l/H$ of the wagon pattern (ch. 14)", "1/m"),
+    (r"$\psi$", r"squared wavenumber $\kappa^2$ of the Timoshenko rail; $\psi_1,\ \psi_2$ the "
+     "roots of its dispersion relation (ch. 14)", "1/m²"),
     (r"$N_0$", r"split of eq. (21): harmonics $\lvert n\rvert \le N_0$ use its first branch, the others "
      "its second", "–"),
 )

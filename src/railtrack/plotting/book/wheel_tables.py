@@ -42,7 +42,8 @@ def smooth_rail_table(solutions: Mapping) -> str:
         e = solution.extremes()
         rows.append([label, solution.harmonics, _per_wheel(e["max"], 2),
                      _per_wheel(e["min"], 2), f"{(e['max'] - e['min']).max() * KN:.2f}"])
-    header = ["speed", "m", "P max [kN], wheel 1 / 2", "P min [kN]", "swing [kN]"]
+    header = ["speed", "m", "Q_c max [kN], wheel 1 / 2", "Q_c min [kN]",
+              "swing [kN]"]
     return markdown_table(header, rows)
 
 
@@ -61,7 +62,7 @@ def dipped_weld_table(solutions: Mapping, samples: int = 4096) -> str:
     str
         A markdown table: the label; the largest contact force of each wheel
         [kN] and where along the track wheel 1 meets it [m]; the same for the
-        smallest; the largest dynamic factor P max / Q of any wheel; the
+        smallest; the largest dynamic factor Q_c max / Q of any wheel; the
         largest rail-seat load [kN].
     """
     rows = []
@@ -72,7 +73,7 @@ def dipped_weld_table(solutions: Mapping, samples: int = 4096) -> str:
                      _per_wheel(e["min"], 1), f"{e['where_min'][0]:.2f}",
                      f"{e['dynamic_factor'].max():.2f}",
                      f"{solution.rail_seat_load(t).max() * KN:.1f}"])
-    header = ["speed", "P max [kN], wheel 1 / 2", "at x, wheel 1 [m]", "P min [kN]",
+    header = ["speed", "Q_c max [kN], wheel 1 / 2", "at x, wheel 1 [m]", "Q_c min [kN]",
               "at x, wheel 1 [m]", "dynamic factor", "max seat load [kN]"]
     return markdown_table(header, rows)
 
@@ -97,7 +98,7 @@ def p2_table(speeds: np.ndarray, computed: Mapping, formula: Mapping,
     -------
     str
         A markdown table, one row per speed: every computed and every formula
-        column [kN], and the dynamic part P - Q of the first computed column
+        column [kN], and the dynamic part Q_c - Q of the first computed column
         over that of the first formula column.
     """
     speeds = np.asarray(speeds, dtype=float)
@@ -109,5 +110,5 @@ def p2_table(speeds: np.ndarray, computed: Mapping, formula: Mapping,
             for i, v in enumerate(speeds)]
     header = ["v [m/s]", *(f"HB, {name} [kN]" for name in computed),
               *(f"P2, {name} [kN]" for name in formula),
-              f"P - Q, HB {first} over P2 {reference}"]
+              f"Q_c - Q, HB {first} over P2 {reference}"]
     return markdown_table(header, rows)

@@ -53,7 +53,7 @@ def plot_contact_along_track(solutions: dict, wheel: int = 0, window: tuple[floa
     _shade_dip(ax, dip)
     ax.set_xlim(lo, hi)
     ax.set_xlabel("wheel position along the track x [m] (grey verticals: sleepers)")
-    ax.set_ylabel("contact force P [kN]")
+    ax.set_ylabel(r"contact force $Q_c$ [kN]")
     ax.grid(True, axis="y", alpha=0.3)
     ax.legend(fontsize=8)
     return fig
@@ -93,7 +93,7 @@ def plot_loss_of_contact(solution, window: tuple[float, float], samples: int = 1
         axes[0].plot(x[order][keep], force[k][order][keep], label=f"wheel {k + 1}", **style)
         axes[1].plot(x[order][keep], compression[k][order][keep], **style)
     axes[1].axhline(0.0, color="k", lw=0.8)
-    axes[0].set_ylabel("contact force P [kN]")
+    axes[0].set_ylabel(r"contact force $Q_c$ [kN]")
     axes[1].set_ylabel("compression δ [µm]")
     axes[1].set_xlabel("wheel position along the track x [m]")
     for ax in axes:
