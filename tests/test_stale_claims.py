@@ -149,11 +149,7 @@ UNCITED = {
                  "it cites, as the bibliography page says",
 }
 # listed, cited nowhere and no reason: expected to fail until cited or dropped
-KNOWN_UNCITED = {
-    "zhai2009": "cited nowhere since cd53214 replaced it with huo2019 in "
-                "chapter 1, like knothe1993; cite it where the book uses it or "
-                "drop it from references.bib",
-}
+KNOWN_UNCITED: dict[str, str] = {}  # key: why it is still uncited (none today)
 
 
 def cited_keys(texts):
