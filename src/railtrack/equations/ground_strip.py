@@ -1,0 +1,154 @@
+"""The equivalent stiffness of the ground under a strip along the track (2.5D).
+
+A load P exp(i (k_x x - omega t)) per unit length [N/m], spread uniformly over
+a strip |y| <= b/2 across the track, is the stress (P/b) rect(y/b); its
+transform in y is P sinc(k_y b/2).  The ground's vertical displacement on the
+strip's centre line y = 0 is then
+
+    w = (P / 2 pi) int F(sqrt(k_x^2 + k_y^2), omega) sinc(k_y b/2) dk_y,
+
+with F the surface flexibility of `railtrack.equations.ground_stiffness`, and
+the equivalent stiffness per unit length is K_eq = P / w [N/m^2]
+(Dieterman & Metrikine 1996, eq. 10: the displacement taken on the axis of
+the beam that lies on the strip).  ``average=True`` takes instead the
+displacement averaged over the width, sinc^2 in the integral (the choice of
+later 2.5D models, for a rigid sleeper or slab).
+
+Quadrature.  The integrand is even in k_y; 8-point Gauss-Legendre panels on
+[0, Y] are fine (k grows by xi/2 from panel to panel, a pole damped by xi
+being ~ xi k wide) over the k_y that map to k between 0.98 omega/c_s of the
+half-space and omega / (0.8 min c_s) (the surface-wave poles and the
+half-space's branch points, which are also panel ends), graded geometrically
+near k_y = 0 (the 1/k singularity as k_x -> 0) and no wider than pi/b for the
+sinc; beyond Y the flexibility is the top stratum's static one,
+(1 - nu)/(mu* k), whose tail is integrated in closed form (sine and cosine
+integrals).  Hysteretic damping keeps the poles off the real axis, so some
+damping is required when omega != 0.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.special import sici
+
+from ..model.ground import Ground
+from ..model.validation import require_finite, require_positive
+from .ground_stiffness import surface_flexibility
+
+__all__ = ["strip_flexibility", "strip_stiffness"]
+
+_NODES, _WEIGHTS = np.polynomial.legendre.leggauss(8)
+
+
+def _breakpoints(ground: Ground, kx: float, omega: float, width: float) -> np.ndarray:
+    """Panel ends on [0, Y] in k_y for one k_x (see the module's note)."""
+    half, strata = ground.halfspace, ground.strata
+    k_slow = abs(omega) / (0.8 * min(s.shear_wave_speed for s in strata))   # below every c_R
+    k_fast = abs(omega) / half.shear_wave_speed
+    end = max(120.0 / width, 3.0 * k_slow, 10.0 * kx)
+    features = [abs(omega) / half.p_wave_speed, k_fast, k_slow]
+    points = [0.0, end] + [np.sqrt(f * f - kx * kx) for f in features if f > kx]
+    near = 0.0                                    # k_y below which the dynamic cap holds
+    cap = np.pi / width
+    if omega != 0.0:
+        xi = max(min(s.damping_ratio for s in strata if s.damping_ratio > 0), 1e-3)
+        # k from 0.98 k_fast to 1.02 k_slow in steps of xi k / 2: a pole's width is ~ xi k
+        k = 0.98 * k_fast * (1.0 + 0.5 * xi) ** np.arange(
+            int(np.log(1.04 * k_slow / (0.98 * k_fast)) / np.log1p(0.5 * xi)) + 2)
+        points += list(np.sqrt(k[k > kx] ** 2 - kx * kx))
+        near = 1.5 * np.sqrt(max(k_slow**2 - kx * kx, 0.0)) + 0.5 * k_fast
+        cap_near = min(cap, 0.1 * k_fast)
+    scale = max(kx, 1e-6 / width)                            # the width of the peak at k_y = 0
+    points += list(scale * 1e-3 * 1.3 ** np.arange(int(np.log(end / (scale * 1e-3))
+                                                          / np.log(1.3)) + 1))
+    points = np.unique(np.clip(points, 0.0, end))
+    caps = np.where(points[:-1] < near, cap_near if near else cap, cap)
+    pieces = np.maximum(np.ceil(np.diff(points) / caps), 1).astype(int)
+    return np.concatenate([np.linspace(a, b, n, endpoint=False)
+                           for a, b, n in zip(points[:-1], points[1:], pieces)] + [[end]])
+
+
+def _check(ground: Ground, kx, omega, width):
+    require_positive("width", width, "m")
+    require_finite("omega", omega, "rad/s")
+    kx = np.atleast_1d(np.asarray(kx, dtype=float))
+    require_finite("kx", kx, "rad/m")
+    if omega != 0 and all(s.damping_ratio == 0 for s in ground.strata):
+        raise ValueError("strip_flexibility needs some damping (damping_ratio > 0 in a layer or "
+                         f"the half-space) at omega={omega} rad/s: undamped, the surface waves' "
+                         "poles lie on the path of integration")
+    if omega == 0 and np.any(kx == 0):
+        raise ValueError("kx must be nonzero at omega=0: a static line load on a half-space has "
+                         "no finite displacement")
+    return np.abs(kx)
+
+
+def strip_flexibility(ground: Ground, kx, omega: float, width: float,
+                      average: bool = False) -> np.ndarray:
+    """w / P [m^2/N] of the ground under a strip of width b loaded P exp(i (k_x x - omega t)).
+
+    Parameters
+    ----------
+    ground : Ground
+    kx : array_like
+        Wavenumber along the track [rad/m].
+    omega : float
+        Circular frequency in the ground's frame [rad/s].
+    width : float
+        b > 0 [m], the loaded width across the track.
+    average : bool
+        False: the displacement on the centre line (Dieterman & Metrikine
+        1996); True: averaged over the width.
+
+    Examples
+    --------
+    A wide strip at short waves is plane strain: w/P -> F(k_x) / b.
+
+    >>> from railtrack.equations.ground_stiffness import surface_flexibility
+    >>> ground = Ground.homogeneous(100.0, 0.3, 1800.0, 0.02)
+    >>> ratio = strip_flexibility(ground, 2.0, 0.0, 100.0) * 100.0
+    >>> round(float(ratio.real / surface_flexibility(ground, 2.0, 0.0).real), 2)
+    1.0
+    """
+    shape_in = np.shape(kx)
+    kx = _check(ground, kx, float(omega), width)
+    grids = [_breakpoints(ground, k, float(omega), width) for k in kx]
+    nodes, weights, owner = [], [], []
+    for i, edges in enumerate(grids):
+        mid, half = 0.5 * (edges[1:] + edges[:-1]), 0.5 * np.diff(edges)
+        nodes.append((mid[:, None] + half[:, None] * _NODES).ravel())
+        weights.append((half[:, None] * _WEIGHTS).ravel())
+        owner.append(np.full(nodes[-1].size, i))
+    ky, weight, owner = map(np.concatenate, (nodes, weights, owner))
+    shape = np.sinc(ky * width / (2.0 * np.pi))              # numpy's sinc is sin(pi x)/(pi x)
+    if average:
+        shape = shape * shape
+    values = surface_flexibility(ground, np.hypot(kx[owner], ky), omega) * shape * weight
+    total = np.bincount(owner, values.real, kx.size) + 1j * np.bincount(owner, values.imag,
+                                                                         kx.size)
+    top = ground.strata[0]
+    static = (1.0 - top.poisson_ratio) / (top.shear_modulus * top.damping_factor(omega))
+    x = np.array([g[-1] for g in grids]) * width / 2.0
+    if average:   # int_x^inf sin^2 t / t^3 dt
+        tail = np.sin(x) ** 2 / (2 * x * x) + np.sin(2 * x) / (2 * x) - sici(2 * x)[1]
+    else:         # int_x^inf sin t / t^2 dt
+        tail = np.sin(x) / x - sici(x)[1]
+    return ((total + static * tail) / np.pi).reshape(shape_in)
+
+
+def strip_stiffness(ground: Ground, kx, omega: float, width: float,
+                    average: bool = False) -> np.ndarray:
+    """K_eq = P / w [N/m^2], the ground's equivalent stiffness per unit length of track.
+
+    The inverse of `strip_flexibility` (Dieterman & Metrikine 1996, eq. 10):
+    the stiffness a beam on the strip feels at wavenumber k_x and frequency
+    omega, per unit length.
+
+    Examples
+    --------
+    >>> ground = Ground.homogeneous(100.0, 0.3, 1800.0, 0.02)
+    >>> k = strip_stiffness(ground, [0.5, 1.0], 0.0, 3.0)
+    >>> bool(np.all(k.real > 0)), bool(k[1].real > k[0].real)
+    (True, True)
+    """
+    return 1.0 / strip_flexibility(ground, kx, omega, width, average)
