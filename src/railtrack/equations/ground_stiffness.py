@@ -13,7 +13,9 @@ exp(-i omega t)),
 with the complex moduli of `railtrack.model.ground`.  Each layer has a 4x4
 stiffness matrix (the forces on its faces for the displacements (u, w) of its
 faces), the half-space a 2x2 one; they add at the interfaces like bars of a
-frame (Kausel & Roesset 1981, eqs. 18-20 and the half-space, eq. 21).
+frame (Kausel & Roesset 1981: their layer and half-space matrices for P-SV waves;
+the matrices here are the same physics in another basis, so their entries are
+not copied from the paper but follow from Hooke's law and the wave equation).
 
 Stability (the reason this module does not copy their hyperbolic forms).
 Every wave is written decaying from the face where it starts, exp(-q z)
@@ -95,7 +97,7 @@ def _prepare(k, omega):
 
 
 def layer_stiffness(layer: SoilLayer, k, omega) -> np.ndarray:
-    """The 4x4 dynamic stiffness of a layer for P-SV waves (Kausel & Roesset 1981, eq. 18).
+    """The 4x4 dynamic stiffness of a layer for P-SV waves (Kausel & Roesset 1981).
 
     Parameters
     ----------
@@ -135,7 +137,7 @@ def layer_stiffness(layer: SoilLayer, k, omega) -> np.ndarray:
 
 
 def halfspace_stiffness(layer: SoilLayer, k, omega) -> np.ndarray:
-    """The 2x2 dynamic stiffness of a half-space for P-SV waves (Kausel & Roesset 1981, eq. 21).
+    """The 2x2 dynamic stiffness of a half-space for P-SV waves (Kausel & Roesset 1981).
 
     Forces -(tau_xz, sigma_zz) on its surface per its displacement (u, w), shape
     (..., 2, 2), complex [Pa/m]; `layer`'s thickness is ignored.

@@ -9,10 +9,11 @@ strip's centre line y = 0 is then
 
 with F the surface flexibility of `railtrack.equations.ground_stiffness`, and
 the equivalent stiffness per unit length is K_eq = P / w [N/m^2]
-(Dieterman & Metrikine 1996, eq. 10: the displacement taken on the axis of
-the beam that lies on the strip).  ``average=True`` takes instead the
-displacement averaged over the width, sinc^2 in the integral (the choice of
-later 2.5D models, for a rigid sleeper or slab).
+(Dieterman & Metrikine 1996).  The displacement is taken on the centre line
+of the beam lying on the strip, the convention we read in their work (their
+equations were not at hand to check it line by line).  ``average=True`` takes
+instead the displacement averaged over the width, sinc^2 in the integral: the
+choice for a body that moves as one across its width (a rigid sleeper, a slab).
 
 Quadrature.  The integrand is even in k_y; 8-point Gauss-Legendre panels on
 [0, Y] are fine (k grows by xi/2 from panel to panel, a pole damped by xi
@@ -140,7 +141,7 @@ def strip_stiffness(ground: Ground, kx, omega: float, width: float,
                     average: bool = False) -> np.ndarray:
     """K_eq = P / w [N/m^2], the ground's equivalent stiffness per unit length of track.
 
-    The inverse of `strip_flexibility` (Dieterman & Metrikine 1996, eq. 10):
+    The inverse of `strip_flexibility` (Dieterman & Metrikine 1996):
     the stiffness a beam on the strip feels at wavenumber k_x and frequency
     omega, per unit length.
 

@@ -2,7 +2,7 @@
 
 A free wave exp(i (k x - omega t)) of the undamped ground is a real k at which
 the assembled stiffness of `railtrack.equations.ground_stiffness` is singular:
-det K(k, omega) = 0 (Kausel & Roesset 1981, the modes of their eq. 20).  With
+det K(k, omega) = 0 (the modal problem of Kausel & Roesset 1981).  With
 the scaling w -> i w of every node, K is real for real k and omega while the
 half-space's waves are evanescent (c = omega / k below its shear-wave speed),
 so det K changes sign at each mode; it also changes sign at the poles of a
