@@ -74,7 +74,7 @@ def _down_going(k, omega, waves, z):
         small = np.abs(x) < 1.0
         phi = np.where(x == 0, 1.0, np.expm1(x) / np.where(x == 0, 1.0, x))
         direct = (np.exp(-q_s * z) - e_p) / np.where(delta == 0, 1.0, delta)
-    e_diff = np.where(small, -z * e_p * phi, direct)
+        e_diff = np.where(small, -z * e_p * phi, direct)     # each branch finite where taken
     kss = k2 + q_s**2
     disp = np.stack([np.stack([k * e_p, k * q_s * e_diff], -1),
                      np.stack([1j * q_p * e_p, 1j * (k2 * e_diff + ratio_r * e_p)], -1)], -2)
