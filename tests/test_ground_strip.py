@@ -86,12 +86,21 @@ def test_the_critical_velocity_of_a_load_on_the_half_space_is_the_rayleigh_speed
     ground = Ground.homogeneous(100.0, 0.3, 1800.0, 0.01)
     c_r = rayleigh_speed(100.0, 0.3)
     speeds = c_r * np.linspace(0.8, 1.2, 81)                     # steps of 0.5 % of c_R
-    stiffness = np.abs([strip_stiffness(ground, kx, kx * v, WIDTH) for v in speeds])
+    stiffness = np.abs(strip_stiffness(ground, kx, kx * speeds, WIDTH))
     assert abs(speeds[np.argmin(stiffness)] / c_r - 1) < 0.006
     assert stiffness.min() < 0.5 * min(stiffness[20], stiffness[60])   # against 0.9 and 1.1 c_R
     # the dip deepens towards Dieterman & Metrikine's zero as the damping goes
     lighter = Ground.homogeneous(100.0, 0.3, 1800.0, 0.001)
     assert abs(strip_stiffness(lighter, kx, kx * c_r, WIDTH)) < 0.5 * stiffness.min()
+
+
+def test_pairs_of_wavenumber_and_frequency_are_each_the_scalar_call():
+    kx, omega = np.array([[0.2, 1.0, 4.0]]), np.array([[0.0], [35.0], [-90.0]])
+    together = strip_stiffness(CLAY, kx, omega, WIDTH, average=True)
+    assert together.shape == (3, 3)
+    for (i, j), value in np.ndenumerate(together):
+        alone = strip_stiffness(CLAY, kx[0, j], omega[i, 0], WIDTH, average=True)
+        assert np.shape(alone) == () and value == pytest.approx(alone, rel=1e-13)
 
 
 def test_bad_strips_are_refused_by_name():

@@ -70,21 +70,22 @@ def _breakpoints(ground: Ground, kx: float, omega: float, width: float) -> np.nd
 
 
 def _check(ground: Ground, kx, omega, width):
+    """|k_x| and omega broadcast to 1-D arrays, and the shape to give back."""
     require_positive("width", width, "m")
-    require_finite("omega", omega, "rad/s")
-    kx = np.atleast_1d(np.asarray(kx, dtype=float))
+    kx, omega = np.broadcast_arrays(np.asarray(kx, dtype=float), np.asarray(omega, dtype=float))
     require_finite("kx", kx, "rad/m")
-    if omega != 0 and all(s.damping_ratio == 0 for s in ground.strata):
+    require_finite("omega", omega, "rad/s")
+    if np.any(omega != 0) and all(s.damping_ratio == 0 for s in ground.strata):
         raise ValueError("strip_flexibility needs some damping (damping_ratio > 0 in a layer or "
-                         f"the half-space) at omega={omega} rad/s: undamped, the surface waves' "
-                         "poles lie on the path of integration")
-    if omega == 0 and np.any(kx == 0):
-        raise ValueError("kx must be nonzero at omega=0: a static line load on a half-space has "
-                         "no finite displacement")
-    return np.abs(kx)
+                         f"the half-space) at omega={omega[omega != 0].flat[0]} rad/s: undamped, "
+                         "the surface waves' poles lie on the path of integration")
+    if np.any((omega == 0) & (kx == 0)):
+        raise ValueError("kx must be nonzero where omega=0: a static line load on a half-space "
+                         "has no finite displacement")
+    return np.abs(kx).ravel(), omega.ravel(), kx.shape
 
 
-def strip_flexibility(ground: Ground, kx, omega: float, width: float,
+def strip_flexibility(ground: Ground, kx, omega, width: float,
                       average: bool = False) -> np.ndarray:
     """w / P [m^2/N] of the ground under a strip of width b loaded P exp(i (k_x x - omega t)).
 
@@ -93,13 +94,18 @@ def strip_flexibility(ground: Ground, kx, omega: float, width: float,
     ground : Ground
     kx : array_like
         Wavenumber along the track [rad/m].
-    omega : float
-        Circular frequency in the ground's frame [rad/s].
+    omega : array_like
+        Circular frequency in the ground's frame [rad/s], broadcast with `kx`
+        (for a load moving at v in the ground's frame, omega = Omega + k_x v).
     width : float
         b > 0 [m], the loaded width across the track.
     average : bool
         False: the displacement on the centre line (Dieterman & Metrikine
         1996); True: averaged over the width.
+
+    Returns
+    -------
+    ndarray, complex [m^2/N], the broadcast shape of `kx` and `omega`.
 
     Examples
     --------
@@ -111,9 +117,8 @@ def strip_flexibility(ground: Ground, kx, omega: float, width: float,
     >>> round(float(ratio.real / surface_flexibility(ground, 2.0, 0.0).real), 2)
     1.0
     """
-    shape_in = np.shape(kx)
-    kx = _check(ground, kx, float(omega), width)
-    grids = [_breakpoints(ground, k, float(omega), width) for k in kx]
+    kx, omega, shape_out = _check(ground, kx, omega, width)
+    grids = [_breakpoints(ground, k, w, width) for k, w in zip(kx, omega)]
     nodes, weights, owner = [], [], []
     for i, edges in enumerate(grids):
         mid, half = 0.5 * (edges[1:] + edges[:-1]), 0.5 * np.diff(edges)
@@ -124,7 +129,7 @@ def strip_flexibility(ground: Ground, kx, omega: float, width: float,
     shape = np.sinc(ky * width / (2.0 * np.pi))              # numpy's sinc is sin(pi x)/(pi x)
     if average:
         shape = shape * shape
-    values = surface_flexibility(ground, np.hypot(kx[owner], ky), omega) * shape * weight
+    values = surface_flexibility(ground, np.hypot(kx[owner], ky), omega[owner]) * shape * weight
     total = np.bincount(owner, values.real, kx.size) + 1j * np.bincount(owner, values.imag,
                                                                          kx.size)
     top = ground.strata[0]
@@ -134,16 +139,16 @@ def strip_flexibility(ground: Ground, kx, omega: float, width: float,
         tail = np.sin(x) ** 2 / (2 * x * x) + np.sin(2 * x) / (2 * x) - sici(2 * x)[1]
     else:         # int_x^inf sin t / t^2 dt
         tail = np.sin(x) / x - sici(x)[1]
-    return ((total + static * tail) / np.pi).reshape(shape_in)
+    return ((total + static * tail) / np.pi).reshape(shape_out)
 
 
-def strip_stiffness(ground: Ground, kx, omega: float, width: float,
+def strip_stiffness(ground: Ground, kx, omega, width: float,
                     average: bool = False) -> np.ndarray:
     """K_eq = P / w [N/m^2], the ground's equivalent stiffness per unit length of track.
 
-    The inverse of `strip_flexibility` (Dieterman & Metrikine 1996):
-    the stiffness a beam on the strip feels at wavenumber k_x and frequency
-    omega, per unit length.
+    The inverse of `strip_flexibility` (Dieterman & Metrikine 1996), same
+    arguments: the stiffness a beam on the strip feels at wavenumber k_x and
+    frequency omega, per unit length.
 
     Examples
     --------
