@@ -105,3 +105,14 @@ def test_a_half_space_in_the_layers_is_refused():
         Ground((SoilLayer(100.0, 0.3, 1800.0),), SoilLayer(200.0, 0.3, 1800.0))
     with pytest.raises(ValueError, match="halfspace"):
         Ground((), SoilLayer(200.0, 0.3, 1800.0, thickness=3.0))
+
+
+def test_the_soil_moduli_are_those_of_isotropic_elasticity():
+    soil = SoilLayer.from_young_modulus(30e6, 0.25, 1800.0, 0.03, thickness=2.0)
+    mu = 30e6 / 2.5                                                  # E / (2 (1 + nu))
+    assert soil.shear_modulus == pytest.approx(mu, rel=1e-14)
+    assert soil.young_modulus == pytest.approx(30e6, rel=1e-14)
+    assert soil.lame_lambda == pytest.approx(mu, rel=1e-14)         # lambda = mu at nu = 1/4
+    assert soil.p_wave_speed == pytest.approx(math.sqrt(3 * mu / 1800.0), rel=1e-14)
+    assert soil.thickness == 2.0 and soil.damping_ratio == 0.03
+    assert soil.damping_factor(-5.0) == pytest.approx(1 + 0.06j)

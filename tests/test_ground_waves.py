@@ -89,3 +89,24 @@ def test_the_fundamental_mode_is_a_root_of_knopoffs_global_matrix(frequency):
     # ... and not within 0.5 % of it on either side (so the sign change is the root's)
     far = [_global_matrix(layer, half, omega / (c * (1 + s * 5e-3)), omega) for s in (-1, 1)]
     assert (far[0] * np.conj(below)).real > 0 and (far[1] * np.conj(above)).real > 0
+
+
+def test_a_stiff_crust_keeps_its_long_waves_and_leaks_its_short_ones():
+    crust = Ground((SoilLayer(300.0, 0.3, 2000.0, 0.02, thickness=2.0),),
+                   SoilLayer(100.0, 0.3, 1800.0, 0.02))
+    # inversely dispersive: long waves see the half-space and travel at its Rayleigh speed,
+    # approached linearly in k h (the stiff crust bends like a plate on the soil)
+    excess = fundamental_phase_speed(crust, [0.004, 0.002]) / rayleigh_speed(100.0, 0.3) - 1
+    assert 0 < excess[1] < 1e-3 and excess[0] / excess[1] == pytest.approx(2.0, rel=0.05)
+    # short waves would travel faster than the half-space's shear waves: no guided mode
+    with pytest.raises(ValueError, match="no Rayleigh mode .* 20.0 Hz"):
+        fundamental_phase_speed(crust, 20.0)
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda: rayleigh_speed(100.0, 0.5), "poisson_ratio"),
+    (lambda: rayleigh_speed(-100.0, 0.3), "shear_wave_speed"),
+    (lambda: fundamental_phase_speed(SOFT_OVER_STIFF, [10.0, 0.0]), "frequency")])
+def test_bad_wave_questions_are_refused_by_name(call, match):
+    with pytest.raises(ValueError, match=match):
+        call()
