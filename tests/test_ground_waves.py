@@ -95,7 +95,7 @@ def test_a_stiff_crust_keeps_its_long_waves_and_leaks_its_short_ones():
     crust = Ground((SoilLayer(300.0, 0.3, 2000.0, 0.02, thickness=2.0),),
                    SoilLayer(100.0, 0.3, 1800.0, 0.02))
     # inversely dispersive: long waves see the half-space and travel at its Rayleigh speed,
-    # approached linearly in k h (the stiff crust bends like a plate on the soil)
+    # approached linearly in the frequency (halving it halves the excess)
     excess = fundamental_phase_speed(crust, [0.004, 0.002]) / rayleigh_speed(100.0, 0.3) - 1
     assert 0 < excess[1] < 1e-3 and excess[0] / excess[1] == pytest.approx(2.0, rel=0.05)
     # short waves would travel faster than the half-space's shear waves: no guided mode

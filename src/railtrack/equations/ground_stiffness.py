@@ -10,7 +10,9 @@ the vertical wavenumbers are
 
 (Re q >= 0 and, for omega > 0, Im q <= 0: waves decay and radiate downwards for
 exp(-i omega t)),
-with the complex moduli of `railtrack.model.ground`.  Each layer has a 4x4
+with the complex moduli of `railtrack.model.ground`.  A real load's response
+is real: F(k, -omega) is the complex conjugate of F(k, omega), so a caller
+using exp(+i omega t) passes -omega.  Each layer has a 4x4
 stiffness matrix (the forces on its faces for the displacements (u, w) of its
 faces), the half-space a 2x2 one; they add at the interfaces like bars of a
 frame (Kausel & Roesset 1981: their layer and half-space matrices for P-SV waves;
