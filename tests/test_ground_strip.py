@@ -57,6 +57,33 @@ def test_the_strip_integral_agrees_with_adaptive_quadrature(ground, kx, omega, a
     assert abs(ours / _by_quad(ground, kx, omega, average) - 1) < 2e-6
 
 
+def _by_quad_beside(ground, kx, omega, y, split=20.0):
+    """The displacement at y from the centre line: sinc(a k_y) cos(y k_y) as two sines beyond."""
+    a = WIDTH / 2
+    unit = ground.strata[0].shear_modulus
+
+    def f(k, take, extra):
+        return take(surface_flexibility(ground, np.hypot(kx, k), omega) * extra(k)) * unit
+
+    total = 0.0
+    for take, part in ((np.real, 1.0), (np.imag, 1j)):
+        shape = (lambda k: np.sinc(a * k / np.pi) * np.cos(y * k))            # noqa: E731
+        near = quad(f, 0.0, split, args=(take, shape), epsabs=0, epsrel=1e-10, limit=4000)[0]
+        far = sum(np.sign(c) * quad(f, split, np.inf, args=(take, lambda k: 1 / (2 * a * k)),
+                                    weight="sin", wvar=abs(c), limlst=400, epsabs=1e-13)[0]
+                  for c in (a + y, a - y) if c != 0)
+        total += (near + far) * part
+    return total / np.pi / unit
+
+
+@pytest.mark.parametrize("ground, kx, omega, y", [
+    (HALF, 0.5, 0.0, 5.0), (CLAY, 0.3, 60.0, 1.5), (HALF, 1.0, 80.0, -4.0)])
+def test_the_ground_beside_the_strip_agrees_with_adaptive_quadrature(ground, kx, omega, y):
+    ours = strip_flexibility(ground, kx, omega, WIDTH, offset=y)
+    assert abs(ours / _by_quad_beside(ground, kx, omega, y) - 1) < 2e-6
+    assert abs(ours) < abs(strip_flexibility(ground, kx, omega, WIDTH))   # less than beneath
+
+
 def test_the_static_stiffness_is_real_and_positive():
     for ground in (HALF, CLAY):
         stiffness = strip_stiffness(ground, np.geomspace(0.01, 20.0, 12), 0.0, WIDTH)
@@ -110,3 +137,5 @@ def test_bad_strips_are_refused_by_name():
         strip_stiffness(HALF, [0.0, 1.0], 0.0, WIDTH)
     with pytest.raises(ValueError, match="width"):
         strip_stiffness(HALF, 1.0, 0.0, -3.0)
+    with pytest.raises(ValueError, match="offset"):
+        strip_flexibility(HALF, 1.0, 0.0, WIDTH, average=True, offset=2.0)

@@ -14,6 +14,8 @@ of the beam lying on the strip, the convention we read in their work (their
 equations were not at hand to check it line by line).  ``average=True`` takes
 instead the displacement averaged over the width, sinc^2 in the integral: the
 choice for a body that moves as one across its width (a rigid sleeper, a slab).
+``offset=y`` gives the ground's displacement on the line y beside the centre
+line, the weight sinc(k_y b/2) cos(k_y y).
 
 Quadrature.  The integrand is even in k_y; 8-point Gauss-Legendre panels on
 [0, Y] are fine over the k_y that map to k between 0.98 omega/c_s of the
@@ -46,7 +48,8 @@ _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(8)
 _SINC_CAP, _POLE_STEP, _NEAR_CAP = 2.0, 1.0, 0.2
 
 
-def _breakpoints(ground: Ground, kx: float, omega: float, width: float) -> np.ndarray:
+def _breakpoints(ground: Ground, kx: float, omega: float, width: float,
+                 offset: float = 0.0) -> np.ndarray:
     """Panel ends on [0, Y] in k_y for one k_x (see the module's note)."""
     half, strata = ground.halfspace, ground.strata
     k_slow = abs(omega) / (0.8 * min(s.shear_wave_speed for s in strata))   # below every c_R
@@ -55,7 +58,7 @@ def _breakpoints(ground: Ground, kx: float, omega: float, width: float) -> np.nd
     features = [abs(omega) / half.p_wave_speed, k_fast, k_slow]
     points = [0.0, end] + [np.sqrt(f * f - kx * kx) for f in features if f > kx]
     near = 0.0                                    # k_y below which the dynamic cap holds
-    cap = _SINC_CAP * np.pi / width
+    cap = _SINC_CAP * np.pi / (width + 2.0 * abs(offset))     # sin((b/2 + |y|) k_y) resolved
     if omega != 0.0:
         xi = max(min(s.damping_ratio for s in strata if s.damping_ratio > 0), 1e-3)
         # k from 0.98 k_fast to 1.02 k_slow in steps of xi k / 2: a pole's width is ~ xi k
@@ -78,6 +81,16 @@ def _breakpoints(ground: Ground, kx: float, omega: float, width: float) -> np.nd
                            for a, b, n in zip(points[:-1], points[1:], pieces)] + [[end]])
 
 
+def _sine_tail(x, kxa, c):
+    """c I2(x) - (k_x a)^2 c^3 I4(x) / 2, I_n(x) = int_x^inf sin t / t^n dt: the tail of
+    sin(c a k_y) / (a k_y) times 1 / k to first order in (k_x / k_y)^2 (zero for c = 0)."""
+    if c == 0:
+        return np.zeros_like(x)
+    i2 = np.sin(x) / x - sici(x)[1]
+    i4 = np.sin(x) / (3 * x**3) + np.cos(x) / (6 * x * x) - i2 / 6.0
+    return c * i2 - 0.5 * kxa**2 * c**3 * i4
+
+
 def _check(ground: Ground, kx, omega, width):
     """|k_x| and omega broadcast to 1-D arrays, and the shape to give back."""
     require_positive("width", width, "m")
@@ -95,7 +108,7 @@ def _check(ground: Ground, kx, omega, width):
 
 
 def strip_flexibility(ground: Ground, kx, omega, width: float,
-                      average: bool = False) -> np.ndarray:
+                      average: bool = False, offset: float = 0.0) -> np.ndarray:
     """w / P [m^2/N] of the ground under a strip of width b loaded P exp(i (k_x x - omega t)).
 
     Parameters
@@ -111,6 +124,10 @@ def strip_flexibility(ground: Ground, kx, omega, width: float,
     average : bool
         False: the displacement on the centre line (Dieterman & Metrikine
         1996); True: averaged over the width.
+    offset : float
+        y [m]: the displacement on the line at y from the centre line instead
+        (the ground beside the track; weight sinc(k_y b/2) cos(k_y y)), only
+        with ``average=False``.
 
     Returns
     -------
@@ -127,7 +144,11 @@ def strip_flexibility(ground: Ground, kx, omega, width: float,
     1.0
     """
     kx, omega, shape_out = _check(ground, kx, omega, width)
-    grids = [_breakpoints(ground, k, w, width) for k, w in zip(kx, omega)]
+    require_finite("offset", offset, "m")
+    if average and offset != 0:
+        raise ValueError(f"offset={offset!r} m needs average=False: the displacement averaged "
+                         "over the strip is taken under the strip")
+    grids = [_breakpoints(ground, k, w, width, offset) for k, w in zip(kx, omega)]
     nodes, weights, owner = [], [], []
     for i, edges in enumerate(grids):
         mid, half = 0.5 * (edges[1:] + edges[:-1]), 0.5 * np.diff(edges)
@@ -136,8 +157,7 @@ def strip_flexibility(ground: Ground, kx, omega, width: float,
         owner.append(np.full(nodes[-1].size, i))
     ky, weight, owner = map(np.concatenate, (nodes, weights, owner))
     shape = np.sinc(ky * width / (2.0 * np.pi))              # numpy's sinc is sin(pi x)/(pi x)
-    if average:
-        shape = shape * shape
+    shape = shape * shape if average else shape * np.cos(ky * offset)
     values = surface_flexibility(ground, np.hypot(kx[owner], ky), omega[owner]) * shape * weight
     total = np.bincount(owner, values.real, kx.size) + 1j * np.bincount(owner, values.imag,
                                                                          kx.size)
@@ -148,10 +168,10 @@ def strip_flexibility(ground: Ground, kx, omega, width: float,
     if average:   # int_x^inf sin^2 t / t^3 dt, and int_x^inf sin^2 t / t^5 dt to O(x^-5)
         tail = np.sin(x) ** 2 / (2 * x * x) + np.sin(2 * x) / (2 * x) - sici(2 * x)[1]
         second = 1.0 / (8.0 * x**4) + np.sin(2 * x) / (4.0 * x**5)
-    else:         # int_x^inf sin t / t^2 dt, and int_x^inf sin t / t^4 dt
-        tail = np.sin(x) / x - sici(x)[1]
-        second = np.sin(x) / (3 * x**3) + np.cos(x) / (6 * x * x) - tail / 6.0
-    tail = tail - 0.5 * (kx * width / 2.0) ** 2 * second
+        tail = tail - 0.5 * (kx * width / 2.0) ** 2 * second
+    else:         # sin(a k) cos(y k) = [sin((a + y) k) + sin((a - y) k)] / 2, each term by
+        tail = sum(0.5 * np.sign(c) * _sine_tail(x * abs(c), kx * width / 2.0, abs(c))
+                   for c in (1.0 + 2.0 * offset / width, 1.0 - 2.0 * offset / width))
     return ((total + static * tail) / np.pi).reshape(shape_out)
 
 
