@@ -10,10 +10,11 @@ take the time dependence exp(-i omega t); the complex Lame moduli are then
 
     mu* = mu (1 - 2 i xi sgn(omega)),    lambda* = lambda (1 - 2 i xi sgn(omega)),
 
-which is the textbook mu (1 + 2 i xi) of the exp(+i omega t) convention
-(Kausel & Roesset 1981): the same hysteretic loss, a phase lag independent
-of frequency, and the conjugate for negative omega so that a real load gives
-a real displacement.  Both moduli carry the same xi, so nu stays real.
+which is the usual mu (1 + 2 i xi) of the exp(+i omega t) convention: the
+same hysteretic loss (a loss factor 2 xi, a phase lag independent of
+frequency), conjugated for negative omega so that a real load gives a real
+displacement.  Both moduli carry the same xi, so nu stays real.  At omega = 0
+the moduli are the elastic ones (the static limit).
 """
 
 from __future__ import annotations
