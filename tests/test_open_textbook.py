@@ -43,6 +43,8 @@ NOT_YET_VERIFIED = {
     "mead1996": "J. Sound Vib. 190(3), 1996: the article's own pages were found, "
                 "its DOI (expected 10.1006/jsvi.1996.0076) in no source",
     "sheng2005": "J. Sound Vib. 282, 2005: DOI in no searched source",
+    "kausel1981": "Bull. Seismol. Soc. Am. 71(6), 1981: volume, issue and pages read from a "
+                  "copy of the article's first page; its DOI in no searched source",
     "chen2011": "Int. J. Non-Linear Mech. 46(1), 2011: DOI in no searched source",
     "nguyen2008": "Comput. Struct. 86, 2008 (Part II, infinite beam under moving "
                   "harmonic loads): DOI (expected 10.1016/j.compstruc.2008.04.010) "

@@ -12,7 +12,11 @@ kept in the Floquet modes), `cell_blocks` (their blocks solved there, by
 Woodbury over the few sleepers that differ), `cell_rail_field` and
 `cell_hill` (Hill's matrix of the cell); for the
 wheel on the rail `wheel_train_receptance` (the free rail under wheels whose
-forces vary) and `timoshenko_receptance` (eq. 3 with shear and rotary inertia).
+forces vary) and `timoshenko_receptance` (eq. 3 with shear and rotary inertia);
+for the layered ground beneath (issue 31) `ground_stiffness` (its surface
+flexibility, Kausel & Roesset's stiffness matrices), `ground_waves` (the
+Rayleigh wave and the fundamental mode's dispersion) and `ground_strip` (the
+equivalent stiffness under a strip along the track, Dieterman & Metrikine).
 
 Imports: `railtrack.model` only.
 """

@@ -6,8 +6,9 @@ it), `foundations` (eqs. 22, 24, 25 and any callable law), `gap` (a
 hanging sleeper's law), `cell` (N sleepers that differ, repeating along
 the track), `wheel` and `profile` (the wheel on the rail and the rail-top
 profile), `timoshenko` (a rail with shear and rotary inertia), `ballast` (a
-ballast-subgrade support reduced to one layer) and `rail_section` (a rail
-profile's moduli, UIC60 and UIC54, for stresses).  Frozen, validated
+ballast-subgrade support reduced to one layer), `rail_section` (a rail
+profile's moduli, UIC60 and UIC54, for stresses) and `ground` (soil layers
+over a half-space, issue 31).  Frozen, validated
 dataclasses in SI units; `validation` holds the checks they share (and the
 conversion of pint quantities to SI), `plausibility` the range of each input
 on real track and `plausibility_check` the warning for a value far outside it.
