@@ -141,6 +141,9 @@ def test_a_measured_rail_passes_through_its_samples_and_repeats():
     h = 1e-5
     assert np.allclose(rail.slope(x), (rail(x + h) - rail(x - h)) / (2 * h), rtol=0,
                        atol=1e-7 * np.max(np.abs(rail.slope(x))))
+    # no kink where the record repeats
+    seam = rail.slope(np.array([18.0 - 1e-9, 1e-9]))
+    assert seam[0] == pytest.approx(seam[1], abs=1e-6 * np.max(np.abs(rail.slope(x))))
 
 
 def test_a_measured_rail_reproduces_a_smooth_rail_within_the_spline_bound():

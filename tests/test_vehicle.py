@@ -15,6 +15,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
+import railtrack as rt
+
 from railtrack.equations.vehicle_matrices import (static_wheelset_loads, vehicle_frequencies,
                                                   vehicle_matrices)
 from railtrack.model.vehicle import Vehicle
@@ -102,6 +104,13 @@ def test_the_wheelsets_share_the_weight_equally(vehicle):
     loads = static_wheelset_loads(vehicle, G)
     assert np.allclose(loads, vehicle.total_mass * G / 4, rtol=1e-12)
     assert np.sum(loads) == pytest.approx(vehicle.total_mass * G, rel=1e-12)
+
+
+def test_the_manchester_loads_are_the_passenger_coachs():
+    # Train.passenger_coach sums the same masses by hand: half a wheelset's load per wheel
+    wheel = rt.Train.passenger_coach().axle_loads
+    assert np.allclose(static_wheelset_loads(MANCHESTER, rt.model.train.STANDARD_GRAVITY) / 2,
+                       wheel, rtol=1e-12)
 
 
 def _rigid(vehicle, factor):

@@ -12,7 +12,9 @@ kept in the Floquet modes), `cell_blocks` (their blocks solved there, by
 Woodbury over the few sleepers that differ), `cell_rail_field` and
 `cell_hill` (Hill's matrix of the cell); for the
 wheel on the rail `wheel_train_receptance` (the free rail under wheels whose
-forces vary) and `timoshenko_receptance` (eq. 3 with shear and rotary inertia).
+forces vary) and `timoshenko_receptance` (eq. 3 with shear and rotary inertia);
+for the vehicle above the wheels `vehicle_matrices` (its M, C, K, natural
+frequencies and static wheelset loads).
 
 Imports: `railtrack.model` only.
 """
