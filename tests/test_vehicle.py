@@ -163,3 +163,14 @@ def test_an_impossible_vehicle_is_refused_by_name(change, error, words):
 def test_a_negative_contact_stiffness_is_refused():
     with pytest.raises(ValueError, match="contact_stiffness"):
         vehicle_frequencies(MANCHESTER, -1.0)
+
+
+def test_a_vehicle_takes_quantities_with_units():
+    pint = pytest.importorskip("pint")
+    ureg = pint.UnitRegistry()
+    car = Vehicle(**{**MANCHESTER.__dict__, "body_mass": 32 * ureg.tonne,
+                     "secondary_stiffness": 860 * ureg("kN/m"),
+                     "body_pitch_inertia": 1.97 * ureg("t m^2") * 1e3,
+                     "wheelbase": 2560 * ureg.mm})
+    assert np.allclose(list(car.__dict__.values()), list(MANCHESTER.__dict__.values()),
+                       rtol=1e-12, atol=0)
