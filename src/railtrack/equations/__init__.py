@@ -14,7 +14,8 @@ Woodbury over the few sleepers that differ), `cell_rail_field` and
 wheel on the rail `wheel_train_receptance` (the free rail under wheels whose
 forces vary) and `timoshenko_receptance` (eq. 3 with shear and rotary inertia);
 for the vehicle above the wheels `vehicle_matrices` (its M, C, K, natural
-frequencies and static wheelset loads).
+frequencies and static wheelset loads) and `vehicle_response` (its dynamic
+stiffness at the wheelsets, its steady ride over a rigid irregular track).
 
 Imports: `railtrack.model` only.
 """
