@@ -5,15 +5,18 @@ superposition (an eigendecomposition, not the Schur complement), whose
 inverse is the dynamic stiffness; the limit of an infinitely heavy body and
 bogies, today's `railtrack.Wheel` on its primary spring; and a time
 integration (scipy's DOP853) of the body and bogies driven by the
-wheelsets riding the profile and its slope, run until the start has died away.
+wheelsets riding the profile and its slope, run until the start has died away;
+and, for the spectral integral of |H|^2 S, the variance of one long
+realisation (the midpoint rule of that integral, within its bound).
 """
 
 import numpy as np
-from scipy.integrate import solve_ivp
+from scipy.integrate import quad, solve_ivp
 from scipy.linalg import eigh
 
 from railtrack.equations.vehicle_matrices import static_wheelset_loads, vehicle_matrices
-from railtrack.equations.vehicle_response import rigid_track_ride, wheelset_dynamic_stiffness
+from railtrack.equations.vehicle_response import (rigid_track_ride, spectral_wheel_load_std,
+                                                  wheel_load_transfer, wheelset_dynamic_stiffness)
 from railtrack.model.irregularity import FRASpectrum
 from railtrack.model.random_profile import RandomProfile
 from railtrack.model.vehicle import Vehicle
@@ -97,3 +100,35 @@ def test_the_ride_over_a_rigid_rail_is_the_time_integrations_steady_state():
     assert np.max(np.abs(truth - static)) > 0.3 * static.max()
     assert np.max(np.abs(forces - truth)) < 1e-4 * np.max(np.abs(truth - static))
     assert np.allclose(forces.mean(axis=1), static[:, 0], rtol=1e-12)
+
+
+def _midpoint_bound(density, omega, step):
+    """dOmega^2/24 * sum over cells of max|g''| * dOmega, g'' by central differences."""
+    points = omega[:, None] + step * np.linspace(-0.5, 0.5, 5)[None, :]
+    h = 1e-4                                              # rad/m; the band starts at 0.25
+    second = (density(points + h) - 2 * density(points) + density(points - h)) / h ** 2
+    return step ** 2 / 24 * np.sum(np.abs(second).max(axis=1), axis=0) * step
+
+
+def test_the_spectral_integral_is_the_long_rails_wheel_load_variance():
+    # one realisation over 30 wagons: its mean square per wheelset is, phase by phase,
+    # sum |H_j|^2 S dOmega, the midpoint rule of the spectral integral
+    speed, band, spectrum = 45.0, (1.5, 25.0), FRASpectrum(4)
+    rail = RandomProfile(spectrum, band, 30 * 18.0, seed=9)
+    _, forces = rigid_track_ride(MANCHESTER, rail, speed, rail.period, samples=1024)
+    variance = forces.var(axis=1)
+    omega, step = rail.wavenumbers, 2 * np.pi / rail.period
+
+    def density(w):
+        w = np.asarray(w, dtype=float)
+        return np.abs(wheel_load_transfer(MANCHESTER, speed, w)) ** 2 * spectrum(w)[..., None]
+
+    cells = np.array([quad(lambda w, j=j: density(w)[j], omega[0] - step / 2,
+                           omega[-1] + step / 2, limit=400, epsrel=1e-10)[0] for j in range(4)])
+    bound = _midpoint_bound(density, omega, step)
+    assert np.all(np.abs(variance - cells) <= 1.5 * bound)
+    assert np.all(bound < 0.02 * cells)
+    low, high = 2 * np.pi / band[1], 2 * np.pi / band[0]
+    edges = step / 2 * (density(low - step / 2) + density(high - step / 2))
+    sigma = spectral_wheel_load_std(MANCHESTER, spectrum, speed, band)
+    assert np.all(np.abs(variance - sigma ** 2) <= 1.5 * bound + edges)

@@ -15,16 +15,22 @@ at s_j from the body's centre, is at x = v t + s_j, so z_wj(t) = r(v t + s_j).
 For a profile repeating every `period` the ride repeats every period / v:
 each harmonic Omega_n = 2 pi n / period of r drives omega_n = Omega_n v,
 and the contact forces are the static loads plus sum_n D(omega_n) z_w,n.
+Per unit harmonic e^{i Omega x} of the rail (x at the body's centre) the
+force on wheelset j is H_j(Omega) = sum_k D_jk(Omega v) e^{i Omega s_k}; over a
+random rail of one-sided spectrum S its variance is the integral of
+|H_j|^2 S dOmega (`spectral_wheel_load_std`).
 """
 
 from __future__ import annotations
 
 import numpy as np
+from scipy.integrate import quad_vec
 
 from ..model.vehicle import Vehicle
 from .vehicle_matrices import WHEELSETS, static_wheelset_loads, vehicle_matrices
 
-__all__ = ["wheelset_dynamic_stiffness", "rigid_track_ride"]
+__all__ = ["wheelset_dynamic_stiffness", "wheel_load_transfer", "rigid_track_ride",
+           "spectral_wheel_load_std"]
 
 
 def wheelset_dynamic_stiffness(vehicle: Vehicle, omega) -> np.ndarray:
@@ -43,6 +49,52 @@ def wheelset_dynamic_stiffness(vehicle: Vehicle, omega) -> np.ndarray:
     rest = slice(0, 6)
     coupling = np.linalg.solve(dynamic[..., rest, rest], dynamic[..., rest, WHEELSETS])
     return dynamic[..., WHEELSETS, WHEELSETS] - dynamic[..., WHEELSETS, rest] @ coupling
+
+
+def wheel_load_transfer(vehicle: Vehicle, speed: float, wavenumbers) -> np.ndarray:
+    """H(Omega) [N/m], complex, shape ``wavenumbers.shape + (4,)``, on a rigid track.
+
+    The force on each wheelset (leading first) per unit harmonic
+    e^{i Omega x} of the rail-top profile, x at the body's centre, at speed v.
+
+    Examples
+    --------
+    >>> H = wheel_load_transfer(Vehicle.manchester(), 30.0, 2 * np.pi / np.array([25.0, 1.5]))
+    >>> (np.abs(H) / 1e6).round(1).tolist()           # MN/m; at 1.5 m ~ the wheelsets' mass
+    [[1.6, 1.6, 0.3, 0.4], [25.2, 26.1, 25.2, 26.1]]
+    """
+    wavenumbers = np.asarray(wavenumbers, dtype=float)
+    shifts = np.exp(1j * wavenumbers[..., None] * vehicle.wheelset_positions)
+    stiffness = wheelset_dynamic_stiffness(vehicle, wavenumbers * float(speed))
+    return np.einsum("...ij,...j->...i", stiffness, shifts)
+
+
+def spectral_wheel_load_std(vehicle: Vehicle, spectrum, speed: float,
+                            wavelengths: tuple) -> np.ndarray:
+    """The standard deviation [N] of each wheelset's force over a random rigid rail.
+
+    sigma_j^2 = integral of |H_j(Omega)|^2 S(Omega) dOmega over the band
+    2 pi / lambda_max .. 2 pi / lambda_min (adaptive quadrature), S one-sided
+    [m^2/(rad/m)] (`railtrack.model.irregularity`).
+
+    Examples
+    --------
+    >>> from railtrack.model.irregularity import FRASpectrum
+    >>> sigma = spectral_wheel_load_std(Vehicle.manchester(), FRASpectrum(4), 45.0, (1.5, 25.0))
+    >>> (sigma / 1e3).round(1).tolist()                            # kN, on 109 kN
+    [19.7, 22.4, 19.7, 22.4]
+    """
+    shortest, longest = (float(w) for w in wavelengths)
+    if not 0.0 < shortest < longest:
+        raise ValueError(f"wavelengths must satisfy 0 < lambda_min < lambda_max [m]; "
+                         f"got {wavelengths!r}")
+
+    def density(omega):
+        return np.abs(wheel_load_transfer(vehicle, speed, omega)) ** 2 * spectrum(omega)
+
+    variance, _ = quad_vec(density, 2 * np.pi / longest, 2 * np.pi / shortest,
+                           epsrel=1e-10, limit=400)
+    return np.sqrt(variance)
 
 
 def rigid_track_ride(vehicle: Vehicle, profile, speed: float, period: float,
@@ -87,10 +139,7 @@ def rigid_track_ride(vehicle: Vehicle, profile, speed: float, period: float,
     wavenumbers = 2 * np.pi * np.arange(samples // 2 + 1) / period
     spectrum = np.fft.rfft(np.asarray(profile(x), dtype=float)) / samples
     # wheelset j meets the rail at v t + s_j: its input is the profile shifted by s_j
-    shifts = np.exp(1j * np.outer(vehicle.wheelset_positions, wavenumbers))   # (4, n)
-    inputs = shifts * spectrum                                                # (4, n)
-    stiffness = wheelset_dynamic_stiffness(vehicle, wavenumbers * speed)      # (n, 4, 4)
-    forces = np.einsum("nij,jn->in", stiffness, inputs)
+    forces = (wheel_load_transfer(vehicle, speed, wavenumbers) * spectrum[:, None]).T
     forces[:, 0] = 0.0                          # a level shift lifts the whole vehicle
     dynamic = np.fft.irfft(forces * samples, n=samples, axis=1)
     times = x / speed
