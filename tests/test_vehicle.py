@@ -174,3 +174,25 @@ def test_a_vehicle_takes_quantities_with_units():
                      "wheelbase": 2560 * ureg.mm})
     assert np.allclose(list(car.__dict__.values()), list(MANCHESTER.__dict__.values()),
                        rtol=1e-12, atol=0)
+
+
+def test_the_vehicles_train_carries_its_static_loads_on_its_axles():
+    coach = MANCHESTER.train(26.4, 45.0)
+    assert np.allclose(coach.axle_loads, static_wheelset_loads(MANCHESTER, 9.81) / 2, rtol=1e-12)
+    positions = np.asarray(coach.axle_positions)
+    spacing = np.diff(positions)
+    assert np.allclose(spacing, [2.56, 19.0 - 2.56, 2.56], rtol=1e-12)
+    # the bogie centres, mid-way between their axles, are the bogie spacing apart
+    centres = positions.reshape(2, 2).mean(axis=1)
+    assert np.diff(centres)[0] == pytest.approx(MANCHESTER.bogie_spacing, rel=1e-12)
+
+
+def test_the_vehicles_wheel_is_the_heavy_body_limit_per_rail():
+    contact = 1.4e9
+    heavy = Vehicle(**{**MANCHESTER.__dict__, "body_mass": 1e15, "body_pitch_inertia": 1e17,
+                       "bogie_mass": 1e15, "bogie_pitch_inertia": 1e15})
+    wheel = MANCHESTER.wheel()
+    # one wheel on half the contact stiffness: the same frequency as the wheelset on all of it
+    alone = np.sqrt((contact / 2 + wheel.primary_stiffness) / wheel.unsprung_mass) / (2 * np.pi)
+    assert np.allclose(vehicle_frequencies(heavy, contact)[-4:], alone, rtol=1e-9)
+    assert wheel.primary_damping == pytest.approx(MANCHESTER.primary_damping / 2)

@@ -20,7 +20,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from .plausibility_check import check_plausible, quantities_to_si
+from .train import STANDARD_GRAVITY, Train
 from .validation import as_float64, require_non_negative, require_positive
+from .wheel import HERTZ_UIC60, Wheel
 
 __all__ = ["Vehicle"]
 
@@ -127,3 +129,37 @@ class Vehicle:
         """The wheelsets from the body's centre, leading first: [a+b, a-b, -a+b, -a-b] [m]."""
         a, b = 0.5 * self.bogie_spacing, 0.5 * self.wheelbase
         return np.array([a + b, a - b, -a + b, -a - b])
+
+    def train(self, wagon_length: float, speed: float,
+              gravity: float = STANDARD_GRAVITY) -> Train:
+        """The `Train` of such wagons: its axles, and each wheel's static load [N].
+
+        Axles at d = 0, 2b, 2a, 2a + 2b behind the first; each wheel on the
+        modelled rail carries half its wheelset's load, (m_c + 2 m_b + 4 m_w) g / 8
+        (the vehicle is symmetric: `railtrack.equations.vehicle_matrices`
+        finds the same by statics).
+
+        Examples
+        --------
+        >>> coach = Vehicle.manchester().train(26.4, 45.0)
+        >>> list(coach.axle_positions), round(float(coach.axle_loads[0]) / 1e3, 2)
+        ([0.0, 2.56, 19.0, 21.56], 54.55)
+        """
+        a2, b2 = float(self.bogie_spacing), float(self.wheelbase)
+        load = self.total_mass * float(gravity) / 8
+        return Train(wagon_length, (0.0, b2, a2, a2 + b2), (load,) * 4, speed)
+
+    def wheel(self, hertz_constant: float = HERTZ_UIC60) -> Wheel:
+        """Today's `Wheel` on the modelled rail: what each wheel becomes under a fixed body.
+
+        Half a wheelset (m_w / 2) on half its primary suspension (k_1 / 2,
+        c_1 / 2) to a body that does not move: the limit of an infinitely
+        heavy body and bogies.
+
+        Examples
+        --------
+        >>> Vehicle.manchester().wheel().unsprung_mass
+        906.5
+        """
+        return Wheel(0.5 * self.wheelset_mass, hertz_constant, 0.5 * self.primary_stiffness,
+                     0.5 * self.primary_damping)
