@@ -14,21 +14,22 @@ Sources differ, and a factor slips in easily:
   variance per band: S_n(n) = 2 pi S(2 pi n), not S(n);
 * a two-sided density, over -inf < Omega < inf, is S/2.
 
-The coefficients below agree between two independent transcriptions that we
-could read (neither is the primary source, which we could not read):
+The coefficients below agree between independent transcriptions that we
+could read (none is the primary source, which we could not read):
 
 * FRA classes 1-6 (k = 0.25, Omega_c = 0.8245 rad/m, A_v in cm^2 rad/m
   1.2107, 1.0181, 0.6816, 0.5376, 0.2095, 0.0339): D. Cantero, TTB-2D
   (GitHub DanielCanteroNTNU/TTB-2D, file A04_Options.m, block "FRA version
-  2", citing A. R. B. Berawi's doctoral thesis, FEUP), and an independent
-  Python script (the same six values and Omega_c in its ``tag == 2`` branch,
-  with k = 0.25 in the formula).
+  2", citing A. R. B. Berawi's doctoral thesis, FEUP), and a Python script
+  found by content search (repository not identified; the same six values,
+  Omega_c and k = 0.25 in its "USA spectra" branch).
 * German high-speed spectra (Omega_c = 0.8246, Omega_r = 0.0206 rad/m,
-  A_v = 4.032e-7 m^2 rad/m for low and 10.80e-7 for high disturbance): the
-  same two files (TTB-2D citing Guo, Xia, De Roeck & Liu, Computers &
-  Structures 112-113 (2012) 205-216, for the low value), and a third,
-  Chinese, script labelling 4.032e-7 "low disturbance" and 1.08e-6 "high".
-  One further script found swaps them (and is a factor 10 off): beware.
+  A_v = 4.032e-7 m^2 rad/m for low and 10.80e-7 for high disturbance): that
+  Python script (both values, "very good" and "good" track), TTB-2D
+  (4.032e-7, citing Guo, Xia, De Roeck & Liu, Computers & Structures
+  112-113 (2012) 205-216), and a Chinese script labelling 4.032e-7 "low
+  disturbance" and 1.08e-6 "high".  One further script found swaps the two
+  (and is a factor 10 off): beware.
 """
 
 from __future__ import annotations
