@@ -97,8 +97,9 @@ class Vehicle:
         doi:10.1080/00423119808969454.  We could not read the paper; the
         values are as two independent transcriptions of it give them
         (D. Cantero's TTB-2D, GitHub DanielCanteroNTNU/TTB-2D, file
-        TrainProp_Manchester_BenchMark.m; and a vehicle-track code listing
-        the benchmark per axlebox and per bogie side): body 32 000 kg,
+        TrainProp_Manchester_BenchMark.m; and a MATLAB vehicle-track code
+        found by content search, repository not identified, listing the
+        benchmark per axlebox and per bogie side): body 32 000 kg,
         1.97e6 kg m^2; bogie frame 2615 kg, 1476 kg m^2; wheelset 1813 kg;
         secondary vertical 430 kN/m and 20 kN s/m per bogie side; primary
         vertical 4 kN s/m per axlebox; half bogie spacing 9.5 m; half
