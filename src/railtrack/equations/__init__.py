@@ -16,7 +16,10 @@ forces vary) and `timoshenko_receptance` (eq. 3 with shear and rotary inertia);
 for the layered ground beneath (issue 31) `ground_stiffness` (its surface
 flexibility, Kausel & Roesset's stiffness matrices), `ground_waves` (the
 Rayleigh wave and the fundamental mode's dispersion) and `ground_strip` (the
-equivalent stiffness under a strip along the track, Dieterman & Metrikine).
+equivalent stiffness under a strip along the track, Dieterman & Metrikine);
+for the vehicle above the wheels `vehicle_matrices` (its M, C, K, natural
+frequencies and static wheelset loads) and `vehicle_response` (its dynamic
+stiffness at the wheelsets, its steady ride over a rigid irregular track).
 
 Imports: `railtrack.model` only.
 """

@@ -5,7 +5,10 @@ loads, speed), `passage` (the train on the track, as the equations take
 it), `foundations` (eqs. 22, 24, 25 and any callable law), `gap` (a
 hanging sleeper's law), `cell` (N sleepers that differ, repeating along
 the track), `wheel` and `profile` (the wheel on the rail and the rail-top
-profile), `timoshenko` (a rail with shear and rotary inertia), `ballast` (a
+profile), `irregularity` (the FRA and German spectra of the rail's
+vertical profile) and `random_profile` (a periodic rail drawn from one, or
+measured), `vehicle` (a bogie wagon's body, bogies and wheelsets),
+`timoshenko` (a rail with shear and rotary inertia), `ballast` (a
 ballast-subgrade support reduced to one layer), `rail_section` (a rail
 profile's moduli, UIC60 and UIC54, for stresses) and `ground` (soil layers
 over a half-space, issue 31).  Frozen, validated
