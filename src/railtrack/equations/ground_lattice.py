@@ -1,0 +1,236 @@
+"""The ground under every sleeper in one harmonic: a lattice sum over wavenumbers, like eq. (3).
+
+**Sleepers as one Bloch wave.**  Sleeper j sits at x_j = j L and, in the
+steady state, repeats sleeper 0 with the delay j L / v (the paper's
+periodic condition, eq. 2).  Its force on the ground, f_j(t) = f(t - j L / v)
+with f = sum_n f_n e^{i omega_n t} (eq. 12's convention, f positive upward
+as w; the sleeper pushes the ground with +f), has harmonic n
+
+    f_{j,n} = f_n e^{-i j q_n},   q_n = omega_n L / v  (the phase of eq. 3).
+
+**Lattice sum.**  The ground's compliance C(k, omega) is defined for a line
+load e^{i(k x - omega t)} (`railtrack.model.ground`).  The real force's part
+at e^{-i omega_n t} is conj(f_n) e^{+i j q_n}; spread uniformly over the
+footprint |x - x_j| < a/2 it is, by Poisson's summation formula,
+
+    sum_j e^{i j q} p(x - j L) = (1/L) sum_m sinc(kappa_m a/2) e^{i kappa_m x},
+    kappa_m = (q + 2 pi m) / L,   sinc(z) = sin(z) / z,
+
+a sum of waves e^{i(kappa_m x - omega t)}; kappa_0 = omega / v travels with
+the train.  The ground answers each with C(kappa_m, omega), and the
+displacement averaged over sleeper 0's footprint (another factor sinc) is
+conj(f_n) S(omega_n), with
+
+    S(omega) = (1/L) sum_m C(kappa_m, omega) sinc^2(kappa_m a / 2).
+
+In eq. (12)'s convention (e^{+i omega_n t}) the ground under sleeper 0 thus
+moves by
+
+    u_n = R_g(omega_n) f_n,   R_g(omega) = conj S(omega)   [m/N].       (G1)
+
+For C = c independent of k, Poisson's formula backwards gives
+sum_m sinc^2(kappa_m a/2) = L / a for any q when a <= L (the footprint's
+autocorrelation, width 2a, sees no neighbour), so R_g = conj(c) / a: the
+Winkler limit, a spring a / c per sleeper.
+
+**The tail.**  sinc^2 falls like k^-2 and a half-space's C like k^-1, so
+the terms fall like |m|^-3 and a plain truncation at |m| <= M misses
+O(M^-2).  On each side the two outermost terms fix a far field
+C ~ C_inf + A / |k|.  The constant C_inf (mean of the two sides) is summed
+exactly with the identity above, L/a minus the kept sinc^2; the A / |k| part
+beyond M with sin^2 replaced by its mean 1/2, giving A / (2 pi a^2 k_M'^2)
+per side with k_M' = |q +- 2 pi (M + 1/2)| / L.  What is left is O(M^-3) or
+smaller for the grounds above (`lattice_sum` returns its estimate, the
+change of the corrected sum from M/2 to M).
+
+**In the harmonic balance.**  The law acts on the relative displacement
+d = w - u: f = f(d, d').  With u_n = R_g,n M G_n(d) (G_n the harmonics of
+f / M, eq. 20), eq. (17) for the sleeper, operator_n w_n + G_n + F_n = 0,
+becomes in the unknowns d_n
+
+    operator_n d_n + (1 + M R_g,n operator_n) G_n(d) + F_n = 0,        (G2)
+
+that is eq. (17) again with operator_n and F_n divided by the factor
+phi_n = 1 + M R_g,n operator_n (`grounded_coefficients`).  phi_0 = 1, since
+the pad and the rail carry no static load of their own (operator_0 = 0).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..model.ground import check_ground
+
+__all__ = ["TERMS", "lattice_sum", "ground_receptance", "grounded_coefficients", "on_ground"]
+
+TERMS = 64
+"""Wavenumbers kept on each side of the lattice sum (m = -M..M)."""
+
+
+def lattice_sum(compliance, omega: float, q: float, spacing: float, footprint: float,
+                terms: int = TERMS) -> tuple[complex, float]:
+    """S(omega) = (1/L) sum_m C(kappa_m, omega) sinc^2(kappa_m a/2) with its tail [m/N].
+
+    Parameters
+    ----------
+    compliance : callable
+        C(kx [rad/m], omega [rad/s]) [m^2/N], convention e^{i(k x - omega t)}.
+    omega : float
+        Frequency [rad/s].
+    q : float
+        Phase between neighbouring sleepers, omega L / v [rad].
+    spacing, footprint : float
+        L and a [m], 0 < a <= L.
+    terms : int
+        M >= 4, wavenumbers kept on each side.
+
+    Returns
+    -------
+    value : complex
+        S, with the far-field tail of the module docstring added.
+    error : float
+        |S_M - S_{M/2}|, both tail-corrected: an estimate of the error [m/N].
+
+    Examples
+    --------
+    >>> value, error = lattice_sum(lambda k, w: np.full(k.shape, 2e-9 + 0j), 100.0, 1.0,
+    ...                            0.6, 0.25)
+    >>> round(value.real / 8e-9, 12), error < 1e-20     # C / a, the Winkler limit
+    (1.0, True)
+    """
+    m = np.arange(-terms, terms + 1)
+    kappa = (q + 2 * np.pi * m) / spacing
+    values = np.asarray(compliance(kappa, omega), dtype=complex)
+    if values.shape != kappa.shape:
+        raise ValueError(f"ground.compliance(kx, omega) must return an array shaped like kx, "
+                         f"{kappa.shape}; got shape {values.shape}")
+    if not np.all(np.isfinite(values)):
+        bad = int(np.flatnonzero(~np.isfinite(values))[0])
+        raise ValueError(
+            f"ground.compliance is not finite at kx = {kappa[bad]:.6g} rad/m, omega = "
+            f"{omega:.6g} rad/s (a ground without a rigid base settles without bound "
+            "under the infinite train's mean load at kx = 0, omega = 0)")
+    weights = np.sinc(kappa * footprint / (2 * np.pi)) ** 2        # np.sinc(x) = sin(pi x)/(pi x)
+    full = _corrected(kappa, values, weights, q, spacing, footprint, terms, terms)
+    half = _corrected(kappa, values, weights, q, spacing, footprint, terms, terms // 2)
+    return full, float(abs(full - half))
+
+
+def _corrected(kappa, values, weights, q, spacing, a, terms, kept):
+    """The sum over |m| <= kept plus the far-field tail fitted on its two outermost terms."""
+    inside = slice(terms - kept, terms + kept + 1)
+    kept_sum = np.sum(values[inside] * weights[inside]) / spacing
+    far, amplitude = [], []
+    for outer, inner in ((terms + kept, terms + kept - 1), (terms - kept, terms - kept + 1)):
+        k2, k1 = abs(kappa[outer]), abs(kappa[inner])
+        slope = (values[inner] - values[outer]) / (1 / k1 - 1 / k2)
+        far.append(values[outer] - slope / k2)
+        amplitude.append(slope)
+    constant = 0.5 * (far[0] + far[1])
+    tail = constant * (1 / a - np.sum(weights[inside]) / spacing)
+    for side, slope in zip((1, -1), amplitude):
+        edge = abs(q + side * 2 * np.pi * (kept + 0.5)) / spacing
+        tail += slope / (2 * np.pi * a**2 * edge**2)
+    return complex(kept_sum + tail)
+
+
+def ground_receptance(ground, omega: np.ndarray, speed: float, spacing: float,
+                      terms: int = TERMS) -> np.ndarray:
+    """R_g(omega_n) of eq. (G1): the ground's displacement under a sleeper per its force [m/N].
+
+    Parameters
+    ----------
+    ground : Ground
+        `railtrack.model.ground.Ground`, e.g. `railtrack.model.ground.WinklerGround`.
+    omega : ndarray
+        omega_n >= 0 [rad/s]; omega_0 = 0 is the mean.
+    speed : float
+        v [m/s].
+    spacing : float
+        L [m].
+    terms : int
+        M, wavenumbers kept on each side (`lattice_sum`).
+
+    Returns
+    -------
+    ndarray, complex, shaped like omega
+        In eq. (12)'s convention: u_n = R_g,n f_n.
+
+    Raises
+    ------
+    ValueError
+        A compliance that is not finite, or whose static value (omega = 0) is not real.
+
+    Examples
+    --------
+    >>> from railtrack.model.ground import WinklerGround
+    >>> r = ground_receptance(WinklerGround(1e8, 0.25, damping=1e5), np.array([0.0, 50.0]),
+    ...                       50.0, 0.6)
+    >>> np.allclose(1 / r, 0.25 * (1e8 + 1j * np.array([0.0, 50.0]) * 1e5))   # a (s + i w eta)
+    True
+    """
+    check_ground(ground, spacing)
+    omega = np.asarray(omega, dtype=float)
+    sums = np.array([lattice_sum(ground.compliance, float(w), float(w) * spacing / speed,
+                                 spacing, float(ground.footprint), terms)[0]
+                     for w in omega.ravel()]).reshape(omega.shape)
+    static = omega == 0
+    if np.any(np.abs(sums[static].imag) > 1e-9 * np.abs(sums[static])):
+        raise ValueError("the ground's static compliance summed over the sleepers is not real "
+                         f"({sums[static][0]!r} m/N): C(-k, 0) must be conj C(k, 0)")
+    sums[static] = sums[static].real
+    return np.conj(sums)
+
+
+def grounded_coefficients(operator: np.ndarray, load: np.ndarray, receptance: np.ndarray,
+                          mass: float) -> tuple[np.ndarray, np.ndarray]:
+    """operator_n / phi_n and F_n / phi_n of eq. (G2), phi_n = 1 + M R_g,n operator_n.
+
+    Parameters
+    ----------
+    operator : ndarray
+        omega_0^2 + i beta omega_n - omega_n^2 - P_n of eq. (17) [1/s^2].
+    load : ndarray
+        F_n of eq. (16) [m/s^2].
+    receptance : ndarray
+        R_g,n [m/N] (`ground_receptance`).
+    mass : float
+        M, the sleeper's mass [kg].
+
+    Examples
+    --------
+    >>> grounded_coefficients(np.array([0.0, -2.0]), np.array([1.0, 1.0]),
+    ...                       np.array([1.0, 0.25]), 2.0)[1]     # phi = 1, 0
+    Traceback (most recent call last):
+    ...
+    ValueError: the factor 1 + M R_g operator of eq. (G2) vanishes at harmonic n = 1: the sleeper on the rail resonates on the ground alone; change m or the speed slightly
+    """
+    factor = 1.0 + mass * receptance * operator
+    if not np.all(np.isfinite(factor)) or np.any(factor == 0):
+        n = int(np.flatnonzero(~np.isfinite(factor) | (factor == 0))[0])
+        raise ValueError(
+            f"the factor 1 + M R_g operator of eq. (G2) vanishes at harmonic n = {n}: the "
+            "sleeper on the rail resonates on the ground alone; change m or the speed slightly")
+    return operator / factor, load / factor
+
+
+def on_ground(passage, omega: np.ndarray, operator: np.ndarray, load: np.ndarray, ground):
+    """(operator, load, R_g) of eq. (G2) for harmonics omega; unchanged and None without ground.
+
+    Examples
+    --------
+    >>> from railtrack import Track, Train, Passage
+    >>> from railtrack.model.ground import WinklerGround
+    >>> passage = Passage(Track.paper(), Train.paper())
+    >>> op, f, r = on_ground(passage, np.array([0.0]), np.zeros(1), np.ones(1),
+    ...                      WinklerGround(1e8, 0.25))
+    >>> float(op[0].real), float(f[0].real), round(float(r[0].real) * 0.25e8, 12)   # R_g = 1 / (a s)
+    (0.0, 1.0, 1.0)
+    """
+    if ground is None:
+        return operator, load, None
+    receptance = ground_receptance(ground, omega, float(passage.speed),
+                                   float(passage.sleeper_spacing))
+    operator, load = grounded_coefficients(operator, load, receptance,
+                                           float(passage.sleeper_mass))
+    return operator, load, receptance
