@@ -170,3 +170,14 @@ def test_what_a_ground_does_not_take_is_refused_by_name():
         rt.solve(TRACK, TRAIN, LAWS["linear"], ground=object())
     with pytest.raises(ValueError, match="footprint"):
         rt.solve(TRACK, TRAIN, LAWS["linear"], ground=rt.WinklerGround(2e8, 0.9))
+
+
+@pytest.mark.parametrize("name", ["linear", "cubic"])
+def test_energy_balance_on_a_damped_ground(name):
+    # the wheel loads' work = pad + law + what the ground takes: a conservation law that
+    # checks the coupling's sign and phase (a wrong conj would make the ground give energy)
+    ground = SmearedLayer(s0=5e7, eta=5e5)
+    s = rt.solve(TRACK, TRAIN, LAWS[name], harmonics=40, ground=ground)
+    energy = rt.dissipation(s)
+    assert energy.ground > 0.05 * energy.total
+    assert abs(rt.load_work(s) / energy.total - 1) < 1e-6
