@@ -101,3 +101,14 @@ def test_bad_grounds_are_refused_with_their_reason():
 
     with pytest.raises(ValueError, match="not finite at kx = 0"):
         ground_receptance(HalfSpace(), np.array([0.0]), 50.0, L)
+
+
+@pytest.mark.parametrize("terms", [16, 64])
+def test_a_phase_many_turns_round_is_summed_about_k_zero(terms):
+    # q_n = 2 pi n L / H passes 2 pi many times for the harmonics of the truncation estimate;
+    # the sum is 2 pi-periodic in q, and its kept window must stay where C is large
+    layer, omega, q = SmearedLayer(), 1500.0, 0.9
+    truth = np.conj(layer.space_sum(omega, q))
+    for turns in (0, 3, 20, -7):
+        value, _ = lattice_sum(layer.compliance, omega, q + 2 * np.pi * turns, L, A, terms)
+        assert abs(value - truth) <= (1e-4 if terms == 16 else 1e-6) * abs(truth)

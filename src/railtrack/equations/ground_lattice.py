@@ -61,10 +61,12 @@ import numpy as np
 
 from ..model.ground import check_ground
 
-__all__ = ["TERMS", "lattice_sum", "ground_receptance", "grounded_coefficients", "on_ground"]
+__all__ = ["TERMS", "TAIL_TERMS", "lattice_sum", "ground_receptance", "grounded_coefficients", "on_ground"]
 
 TERMS = 64
-"""Wavenumbers kept on each side of the lattice sum (m = -M..M)."""
+"""Wavenumbers kept on each side of the lattice sum (m = -M..M): R_g to about 1e-7."""
+TAIL_TERMS = 16
+"""M for the harmonics above m that only the truncation estimate uses: R_g to about 1e-5."""
 
 
 def lattice_sum(compliance, omega: float, q: float, spacing: float, footprint: float,
@@ -78,7 +80,7 @@ def lattice_sum(compliance, omega: float, q: float, spacing: float, footprint: f
     omega : float
         Frequency [rad/s].
     q : float
-        Phase between neighbouring sleepers, omega L / v [rad].
+        Phase between neighbouring sleepers, omega L / v [rad]; S is 2 pi-periodic in q.
     spacing, footprint : float
         L and a [m], 0 < a <= L.
     terms : int
@@ -98,6 +100,11 @@ def lattice_sum(compliance, omega: float, q: float, spacing: float, footprint: f
     >>> round(value.real / 8e-9, 12), error < 1e-20     # C / a, the Winkler limit
     (1.0, True)
     """
+    if isinstance(terms, bool) or not isinstance(terms, (int, np.integer)) or terms < 4:
+        raise ValueError(f"terms must be an integer >= 4; got {terms!r}")
+    # S is 2 pi-periodic in q (relabel m): centre the window of kept wavenumbers on k = 0,
+    # where C is largest, whatever the harmonic's phase q_n = 2 pi n L / H
+    q = float(np.remainder(q + np.pi, 2 * np.pi) - np.pi)
     m = np.arange(-terms, terms + 1)
     kappa = (q + 2 * np.pi * m) / spacing
     values = np.asarray(compliance(kappa, omega), dtype=complex)
@@ -148,8 +155,8 @@ def ground_receptance(ground, omega: np.ndarray, speed: float, spacing: float,
         v [m/s].
     spacing : float
         L [m].
-    terms : int
-        M, wavenumbers kept on each side (`lattice_sum`).
+    terms : int or ndarray of int
+        M, wavenumbers kept on each side (`lattice_sum`), or one M per omega.
 
     Returns
     -------
@@ -171,9 +178,10 @@ def ground_receptance(ground, omega: np.ndarray, speed: float, spacing: float,
     """
     check_ground(ground, spacing)
     omega = np.asarray(omega, dtype=float)
+    terms = np.broadcast_to(terms, omega.shape).ravel()
     sums = np.array([lattice_sum(ground.compliance, float(w), float(w) * spacing / speed,
-                                 spacing, float(ground.footprint), terms)[0]
-                     for w in omega.ravel()]).reshape(omega.shape)
+                                 spacing, float(ground.footprint), int(n))[0]
+                     for w, n in zip(omega.ravel(), terms)]).reshape(omega.shape)
     static = omega == 0
     if np.any(np.abs(sums[static].imag) > 1e-9 * np.abs(sums[static])):
         raise ValueError("the ground's static compliance summed over the sleepers is not real "
@@ -214,8 +222,12 @@ def grounded_coefficients(operator: np.ndarray, load: np.ndarray, receptance: np
     return operator / factor, load / factor
 
 
-def on_ground(passage, omega: np.ndarray, operator: np.ndarray, load: np.ndarray, ground):
+def on_ground(passage, omega: np.ndarray, operator: np.ndarray, load: np.ndarray, ground,
+              exact: int | None = None):
     """(operator, load, R_g) of eq. (G2) for harmonics omega; unchanged and None without ground.
+
+    Harmonics n <= `exact` (default: all) take `TERMS` wavenumbers a side, the
+    rest, which only estimate the truncation error, `TAIL_TERMS`.
 
     Examples
     --------
@@ -229,8 +241,10 @@ def on_ground(passage, omega: np.ndarray, operator: np.ndarray, load: np.ndarray
     """
     if ground is None:
         return operator, load, None
+    n = np.arange(len(omega))
+    terms = np.where(n <= (n[-1] if exact is None else exact), TERMS, TAIL_TERMS)
     receptance = ground_receptance(ground, omega, float(passage.speed),
-                                   float(passage.sleeper_spacing))
+                                   float(passage.sleeper_spacing), terms)
     operator, load = grounded_coefficients(operator, load, receptance,
                                            float(passage.sleeper_mass))
     return operator, load, receptance

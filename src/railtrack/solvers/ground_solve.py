@@ -43,6 +43,21 @@ from .truncation import estimate_of
 __all__ = ["solve_on_ground"]
 
 
+class _Remembered:
+    """The ground with its compliance remembered per (omega, kx): when "auto" grows m, the
+    spectrum of eq. (G2) is evaluated again, and only the new harmonics cost a lattice sum."""
+
+    def __init__(self, ground):
+        self.footprint, self._ground, self._memo = ground.footprint, ground, {}
+
+    def compliance(self, kx, omega):
+        kx = np.asarray(kx, dtype=float)
+        key = (float(omega), kx.shape, kx.tobytes())
+        if key not in self._memo:
+            self._memo[key] = self._ground.compliance(kx, omega)
+        return self._memo[key]
+
+
 def _refuse(ground_options: dict) -> None:
     for name, value, allowed in (
             ("method", ground_options["method"], "newton"),
@@ -94,8 +109,9 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
     check_laws_at_rest([foundation], [float(passage.pad_stiffness)],
                        [float(passage.pad_damping)], check_foundation)
 
+    remembered = _Remembered(ground)
     m, target, spectrum, system, initial = first_system(
-        passage, foundation, harmonics, automatic, method, accuracy, samples, initial, ground)
+        passage, foundation, harmonics, automatic, method, accuracy, samples, initial, remembered)
     iterations = 0
     for _round in range(AUTO_ROUNDS + 1):
         outcome, _, _ = run_method(methods, method, system, tol, max_iterations, None, initial)
@@ -104,7 +120,7 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
         if not automatic or not outcome.converged or tail is None:
             break
         grown = next_system(passage, foundation, method, m, target, estimate, accuracy,
-                            outcome.coefficients, tail, spectrum, ground)
+                            outcome.coefficients, tail, spectrum, remembered)
         if grown is None:
             break
         m, spectrum, system, initial = grown

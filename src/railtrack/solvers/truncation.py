@@ -112,7 +112,9 @@ def track_spectrum(passage: Passage, upto: int, ground=None) -> TrackSpectrum:
     coupling, transfer = coupling_and_transfer(passage, omega)
     load = load_coefficients(passage, omega, transfer)
     operator = sleeper_operator(passage, omega) - coupling
-    operator, load, receptance = on_ground(passage, omega, operator, load, ground)
+    # a HarmonicSystem takes m <= upto / TAIL_FACTOR; the rest is the estimate's
+    operator, load, receptance = on_ground(passage, omega, operator, load, ground,
+                                           upto // TAIL_FACTOR)
     return TrackSpectrum(omega, coupling, load, operator, receptance)
 
 
