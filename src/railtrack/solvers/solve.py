@@ -186,10 +186,8 @@ def solve(
         `railtrack.CosineDip` for a dipped weld); it must repeat with the
         cell of sleepers.
     ground : Ground, optional
-        Put the law between each sleeper and a compliant ground that couples
-        all sleepers (`railtrack.model.ground.Ground`: ``compliance(kx, omega)``
-        and ``footprint``); returns a `GroundSolution`
-        (`railtrack.solvers.ground_solve`, eqs. G1-G2).  Newton only, one law.
+        The law between each sleeper and this ground, which couples them all
+        (`railtrack.model.ground`); a `GroundSolution` (`railtrack.solvers.ground_solve`).
     stability : {"quick", "full", "off"}
         After a converged solve of a nonlinear law, look at its Floquet
         multipliers (`railtrack.solvers.stability_hint`): "quick" warns
@@ -228,10 +226,9 @@ def solve(
         if ground is not None:
             return solve_on_ground(
                 track, train, foundation, ground, harmonics, method, methods=METHODS,
-                accuracy=accuracy, tol=tol,
-                max_iterations=max_iterations, split=split, samples=samples, initial=initial,
-                strict=strict, check_foundation=check_foundation, fallback=fallback,
-                stability=stability, wheel=wheel, profile=profile,
+                accuracy=accuracy, tol=tol, max_iterations=max_iterations, split=split,
+                samples=samples, initial=initial, strict=strict, check_foundation=check_foundation,
+                fallback=fallback, stability=stability, wheel=wheel, profile=profile,
                 cell=isinstance(foundation, SleeperCell))
         if wheel is not None:
             return solve_track_wheels(track, train, foundation, wheel, profile, harmonics, method,
