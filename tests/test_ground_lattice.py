@@ -14,6 +14,16 @@ from ground_doubles import SmearedLayer
 L, A = 0.6, 0.25
 
 
+def test_footprint_transform_and_eq_g2_by_sympy():
+    k, a, x = sp.symbols("k a x", positive=True)
+    transform = sp.integrate(sp.exp(-sp.I * k * x) / a, (x, -a / 2, a / 2))
+    assert sp.simplify((transform - sp.sin(k * a / 2) / (k * a / 2)).rewrite(sp.exp)) == 0
+    # eq. (17) in w = d + u with u = R_g M G is eq. (G2): phi times eq. (17) with op/phi, F/phi
+    op, r, mass, g, f, d = sp.symbols("operator R_g M G F d")
+    phi = 1 + mass * r * op
+    assert sp.simplify(op * (d + r * mass * g) + g + f - phi * (op / phi * d + g + f / phi)) == 0
+
+
 def test_footprint_averages_by_sympy():
     x, y, g, a, d = sp.symbols("x y gamma a d", positive=True)
     inner = sp.integrate(sp.exp(-g * (x - y)), (y, -a / 2, x)) + sp.integrate(
