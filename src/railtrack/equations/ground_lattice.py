@@ -43,16 +43,7 @@ per side with k_M' = |q +- 2 pi (M + 1/2)| / L.  What is left is O(M^-3) or
 smaller for the grounds above (`lattice_sum` returns its estimate, the
 change of the corrected sum from M/2 to M).
 
-**In the harmonic balance.**  The law acts on the relative displacement
-d = w - u: f = f(d, d').  With u_n = R_g,n M G_n(d) (G_n the harmonics of
-f / M, eq. 20), eq. (17) for the sleeper, operator_n w_n + G_n + F_n = 0,
-becomes in the unknowns d_n
-
-    operator_n d_n + (1 + M R_g,n operator_n) G_n(d) + F_n = 0,        (G2)
-
-that is eq. (17) again with operator_n and F_n divided by the factor
-phi_n = 1 + M R_g,n operator_n (`grounded_coefficients`).  phi_0 = 1, since
-the pad and the rail carry no static load of their own (operator_0 = 0).
+How R_g enters the harmonic balance, eq. (G2): `railtrack.equations.ground_balance`.
 """
 
 from __future__ import annotations
@@ -61,7 +52,7 @@ import numpy as np
 
 from ..model.ground import check_ground
 
-__all__ = ["TERMS", "TAIL_TERMS", "lattice_sum", "ground_receptance", "grounded_coefficients", "on_ground"]
+__all__ = ["TERMS", "TAIL_TERMS", "lattice_sum", "lattice_sums", "ground_receptance"]
 
 TERMS = 64
 """Wavenumbers kept on each side of the lattice sum (m = -M..M): R_g to about 1e-7."""
@@ -100,45 +91,63 @@ def lattice_sum(compliance, omega: float, q: float, spacing: float, footprint: f
     >>> round(value.real / 8e-9, 12), error < 1e-20     # C / a, the Winkler limit
     (1.0, True)
     """
+    value, error = lattice_sums(compliance, np.array([omega]), np.array([q]), spacing,
+                                footprint, terms)
+    return complex(value[0]), float(error[0])
+
+
+def lattice_sums(compliance, omega: np.ndarray, q: np.ndarray, spacing: float,
+                 footprint: float, terms: int = TERMS) -> tuple[np.ndarray, np.ndarray]:
+    """`lattice_sum` for several (omega, q) at once, shapes (H,): one compliance call each.
+
+    Examples
+    --------
+    >>> values, errors = lattice_sums(lambda k, w: 1 / (1e8 + 1e7 * k**2 - 1j * w * 1e5),
+    ...                               np.array([0.0, 500.0]), np.array([0.0, 2.0]), 0.6, 0.25)
+    >>> values.shape, bool(np.all(errors < 1e-6 * np.abs(values)))
+    ((2,), True)
+    """
     if isinstance(terms, bool) or not isinstance(terms, (int, np.integer)) or terms < 4:
         raise ValueError(f"terms must be an integer >= 4; got {terms!r}")
     # S is 2 pi-periodic in q (relabel m): centre the window of kept wavenumbers on k = 0,
     # where C is largest, whatever the harmonic's phase q_n = 2 pi n L / H
-    q = float(np.remainder(q + np.pi, 2 * np.pi) - np.pi)
-    m = np.arange(-terms, terms + 1)
-    kappa = (q + 2 * np.pi * m) / spacing
-    values = np.asarray(compliance(kappa, omega), dtype=complex)
-    if values.shape != kappa.shape:
-        raise ValueError(f"ground.compliance(kx, omega) must return an array shaped like kx, "
-                         f"{kappa.shape}; got shape {values.shape}")
-    if not np.all(np.isfinite(values)):
-        bad = int(np.flatnonzero(~np.isfinite(values))[0])
-        raise ValueError(
-            f"ground.compliance is not finite at kx = {kappa[bad]:.6g} rad/m, omega = "
-            f"{omega:.6g} rad/s (a ground without a rigid base settles without bound "
-            "under the infinite train's mean load at kx = 0, omega = 0)")
+    q = np.remainder(np.asarray(q, dtype=float) + np.pi, 2 * np.pi) - np.pi
+    kappa = (q[:, None] + 2 * np.pi * np.arange(-terms, terms + 1)) / spacing
+    values = np.empty(kappa.shape, dtype=complex)
+    for row, (w, k) in enumerate(zip(np.asarray(omega, dtype=float), kappa)):
+        returned = np.asarray(compliance(k, float(w)), dtype=complex)
+        if returned.shape != k.shape:
+            raise ValueError(f"ground.compliance(kx, omega) must return an array shaped like "
+                             f"kx, {k.shape}; got shape {returned.shape}")
+        if not np.all(np.isfinite(returned)):
+            bad = int(np.flatnonzero(~np.isfinite(returned))[0])
+            raise ValueError(
+                f"ground.compliance is not finite at kx = {k[bad]:.6g} rad/m, omega = "
+                f"{w:.6g} rad/s (a ground without a rigid base settles without bound "
+                "under the infinite train's mean load at kx = 0, omega = 0)")
+        values[row] = returned
     weights = np.sinc(kappa * footprint / (2 * np.pi)) ** 2        # np.sinc(x) = sin(pi x)/(pi x)
     full = _corrected(kappa, values, weights, q, spacing, footprint, terms, terms)
     half = _corrected(kappa, values, weights, q, spacing, footprint, terms, terms // 2)
-    return full, float(abs(full - half))
+    return full, np.abs(full - half)
 
 
 def _corrected(kappa, values, weights, q, spacing, a, terms, kept):
     """The sum over |m| <= kept plus the far-field tail fitted on its two outermost terms."""
     inside = slice(terms - kept, terms + kept + 1)
-    kept_sum = np.sum(values[inside] * weights[inside]) / spacing
+    kept_sum = np.sum(values[:, inside] * weights[:, inside], axis=-1) / spacing
     far, amplitude = [], []
     for outer, inner in ((terms + kept, terms + kept - 1), (terms - kept, terms - kept + 1)):
-        k2, k1 = abs(kappa[outer]), abs(kappa[inner])
-        slope = (values[inner] - values[outer]) / (1 / k1 - 1 / k2)
-        far.append(values[outer] - slope / k2)
+        k2, k1 = np.abs(kappa[:, outer]), np.abs(kappa[:, inner])
+        slope = (values[:, inner] - values[:, outer]) / (1 / k1 - 1 / k2)
+        far.append(values[:, outer] - slope / k2)
         amplitude.append(slope)
     constant = 0.5 * (far[0] + far[1])
-    tail = constant * (1 / a - np.sum(weights[inside]) / spacing)
+    tail = constant * (1 / a - np.sum(weights[:, inside], axis=-1) / spacing)
     for side, slope in zip((1, -1), amplitude):
-        edge = abs(q + side * 2 * np.pi * (kept + 0.5)) / spacing
-        tail += slope / (2 * np.pi * a**2 * edge**2)
-    return complex(kept_sum + tail)
+        edge = np.abs(q + side * 2 * np.pi * (kept + 0.5)) / spacing
+        tail = tail + slope / (2 * np.pi * a**2 * edge**2)
+    return kept_sum + tail
 
 
 def ground_receptance(ground, omega: np.ndarray, speed: float, spacing: float,
@@ -178,73 +187,16 @@ def ground_receptance(ground, omega: np.ndarray, speed: float, spacing: float,
     """
     check_ground(ground, spacing)
     omega = np.asarray(omega, dtype=float)
-    terms = np.broadcast_to(terms, omega.shape).ravel()
-    sums = np.array([lattice_sum(ground.compliance, float(w), float(w) * spacing / speed,
-                                 spacing, float(ground.footprint), int(n))[0]
-                     for w, n in zip(omega.ravel(), terms)]).reshape(omega.shape)
+    flat, terms = omega.ravel(), np.broadcast_to(terms, omega.shape).ravel()
+    sums = np.empty(flat.shape, dtype=complex)
+    for count in np.unique(terms):
+        these = terms == count
+        sums[these] = lattice_sums(ground.compliance, flat[these], flat[these] * spacing / speed,
+                                   spacing, float(ground.footprint), int(count))[0]
+    sums = sums.reshape(omega.shape)
     static = omega == 0
     if np.any(np.abs(sums[static].imag) > 1e-9 * np.abs(sums[static])):
         raise ValueError("the ground's static compliance summed over the sleepers is not real "
                          f"({sums[static][0]!r} m/N): C(-k, 0) must be conj C(k, 0)")
     sums[static] = sums[static].real
     return np.conj(sums)
-
-
-def grounded_coefficients(operator: np.ndarray, load: np.ndarray, receptance: np.ndarray,
-                          mass: float) -> tuple[np.ndarray, np.ndarray]:
-    """operator_n / phi_n and F_n / phi_n of eq. (G2), phi_n = 1 + M R_g,n operator_n.
-
-    Parameters
-    ----------
-    operator : ndarray
-        omega_0^2 + i beta omega_n - omega_n^2 - P_n of eq. (17) [1/s^2].
-    load : ndarray
-        F_n of eq. (16) [m/s^2].
-    receptance : ndarray
-        R_g,n [m/N] (`ground_receptance`).
-    mass : float
-        M, the sleeper's mass [kg].
-
-    Examples
-    --------
-    >>> grounded_coefficients(np.array([0.0, -2.0]), np.array([1.0, 1.0]),
-    ...                       np.array([1.0, 0.25]), 2.0)[1]     # phi = 1, 0
-    Traceback (most recent call last):
-    ...
-    ValueError: the factor 1 + M R_g operator of eq. (G2) vanishes at harmonic n = 1: the sleeper on the rail resonates on the ground alone; change m or the speed slightly
-    """
-    factor = 1.0 + mass * receptance * operator
-    if not np.all(np.isfinite(factor)) or np.any(factor == 0):
-        n = int(np.flatnonzero(~np.isfinite(factor) | (factor == 0))[0])
-        raise ValueError(
-            f"the factor 1 + M R_g operator of eq. (G2) vanishes at harmonic n = {n}: the "
-            "sleeper on the rail resonates on the ground alone; change m or the speed slightly")
-    return operator / factor, load / factor
-
-
-def on_ground(passage, omega: np.ndarray, operator: np.ndarray, load: np.ndarray, ground,
-              exact: int | None = None):
-    """(operator, load, R_g) of eq. (G2) for harmonics omega; unchanged and None without ground.
-
-    Harmonics n <= `exact` (default: all) take `TERMS` wavenumbers a side, the
-    rest, which only estimate the truncation error, `TAIL_TERMS`.
-
-    Examples
-    --------
-    >>> from railtrack import Track, Train, Passage
-    >>> from railtrack.model.ground import WinklerGround
-    >>> passage = Passage(Track.paper(), Train.paper())
-    >>> op, f, r = on_ground(passage, np.array([0.0]), np.zeros(1), np.ones(1),
-    ...                      WinklerGround(1e8, 0.25))
-    >>> float(op[0].real), float(f[0].real), round(float(r[0].real) * 0.25e8, 12)   # R_g = 1 / (a s)
-    (0.0, 1.0, 1.0)
-    """
-    if ground is None:
-        return operator, load, None
-    n = np.arange(len(omega))
-    terms = np.where(n <= (n[-1] if exact is None else exact), TERMS, TAIL_TERMS)
-    receptance = ground_receptance(ground, omega, float(passage.speed),
-                                   float(passage.sleeper_spacing), terms)
-    operator, load = grounded_coefficients(operator, load, receptance,
-                                           float(passage.sleeper_mass))
-    return operator, load, receptance

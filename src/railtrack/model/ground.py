@@ -14,7 +14,8 @@ A ground is any object with
 
 `WinklerGround` is the simplest one (a bed of independent springs and
 dashpots, C independent of k_x); a layered half-space is another.  How the
-compliance enters the harmonic balance: `railtrack.equations.ground_lattice`.
+compliance enters the harmonic balance: `railtrack.equations.ground_lattice` (eq. G1)
+and `railtrack.equations.ground_balance` (eq. G2).
 """
 
 from __future__ import annotations

@@ -4,7 +4,8 @@ The law acts between the sleeper and the ground's surface under it; the
 ground couples all sleepers through its lattice sum R_g (eq. G1 of
 `railtrack.equations.ground_lattice`).  The unknowns are the law's relative
 displacement d_n, and the residual is eq. (17) with the operator and the
-load divided by phi_n = 1 + M R_g,n operator_n (eq. G2): the same
+load divided by phi_n = 1 + M R_g,n operator_n (eq. G2 of
+`railtrack.equations.ground_balance`): the same
 `HarmonicSystem`, so the same residual, AFT Jacobian, Newton iteration,
 tolerance, automatic m and truncation estimate as on a rigid ground
 (`railtrack.solvers.solve`).  R_g is evaluated once per spectrum of

@@ -40,7 +40,7 @@ from ..equations.harmonic_balance import HarmonicSystem, NonFiniteForceError, de
 from ..equations.sleeper import coupling_and_transfer, sleeper_operator
 from ..model.passage import Passage
 from ..equations.load import load_coefficients
-from ..equations.ground_lattice import on_ground
+from ..equations.ground_balance import on_ground
 
 __all__ = [
     "TrackSpectrum",
@@ -106,7 +106,7 @@ def track_spectrum(passage: Passage, upto: int, ground=None) -> TrackSpectrum:
     """The linear coefficients of eq. (17) (eqs. 3, 8, 16) for n = 0..upto.
 
     On a `ground`, those of eq. (G2) for the relative displacement d
-    (`railtrack.equations.ground_lattice.on_ground`), once per spectrum.
+    (`railtrack.equations.ground_balance.on_ground`), once per spectrum.
     """
     omega = passage.fundamental_frequency * np.arange(upto + 1)
     coupling, transfer = coupling_and_transfer(passage, omega)
