@@ -112,6 +112,15 @@ def test_bad_grounds_are_refused_with_their_reason():
     with pytest.raises(ValueError, match="not finite at kx = 0"):
         ground_receptance(HalfSpace(), np.array([0.0]), 50.0, L)
 
+    class Lopsided:         # C(-k, 0) != conj C(k, 0): no real ground
+        footprint = A
+
+        def compliance(self, kx, omega):
+            return 1e-9 * (1 + 0.5j * np.sign(kx + 1.0))
+
+    with pytest.raises(ValueError, match="static compliance .* not real"):
+        ground_receptance(Lopsided(), np.array([0.0]), 50.0, L)
+
 
 @pytest.mark.parametrize("terms", [16, 64])
 def test_a_phase_many_turns_round_is_summed_about_k_zero(terms):

@@ -48,6 +48,14 @@ def test_a_rigid_ground_is_todays_solve(name):
                                rtol=1e-9, atol=1e-9 * np.max(np.abs(plain.foundation_force(t))))
 
 
+def test_a_rigid_ground_picks_todays_m_too():
+    plain = rt.solve(TRACK, TRAIN, LAWS["cubic"], stability="off")
+    grounded = rt.solve(TRACK, TRAIN, LAWS["cubic"], ground=RigidGround())
+    assert grounded.harmonics == plain.harmonics
+    assert grounded.truncation_error == pytest.approx(plain.truncation_error, rel=1e-8)
+    assert _relative(grounded.coefficients, plain.coefficients) <= 1e-10
+
+
 def _eq23_with_series(passage, harmonics, law_stiffness, ground_receptance):
     """Eq. (23) per harmonic with the law's stiffness in series with the ground's 1 / R_g."""
     system = harmonic_system(passage, rt.LinearFoundation(2e7), harmonics)  # law unused
