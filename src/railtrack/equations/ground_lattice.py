@@ -17,7 +17,9 @@ footprint |x - x_j| < a/2 it is, by Poisson's summation formula,
     kappa_m = (q + 2 pi m) / L,   sinc(z) = sin(z) / z,
 
 a sum of waves e^{i(kappa_m x - omega t)}; kappa_0 = omega / v travels with
-the train.  The ground answers each with C(kappa_m, omega), and the
+the train.  These are the rail's wavenumbers in eq. (3)
+(`railtrack.equations.receptance.rail_receptance_lattice_sum`); there the
+kernel 1 / (EI (kappa^4 - k_b^4)) is real and even, so no conjugate shows.  The ground answers each with C(kappa_m, omega), and the
 displacement averaged over sleeper 0's footprint (another factor sinc) is
 conj(f_n) S(omega_n), with
 
