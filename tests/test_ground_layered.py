@@ -1,0 +1,71 @@
+"""The layered soil as a ground for `solve` (railtrack.equations.ground_layered.LayeredGround):
+its sign convention (a damped soil takes work: Im C >= 0), the mean it leaves out (C(0, 0) = 0),
+and the Winkler limit end to end: a thin layer on a near-rigid half-space under the track is
+today's solve with the law in series with the spring (lambda + 2 mu) / h * a * b per sleeper."""
+
+import numpy as np
+import pytest
+
+import railtrack as rt
+from railtrack.equations.ground_layered import LayeredGround
+from railtrack.model.ground import Ground, SoilLayer
+
+TRACK, TRAIN = rt.Track.paper(), rt.Train.paper()
+A, B = 0.25, 0.3                     # footprint along, strip width across the track [m]
+
+
+def test_a_damped_soil_takes_work_and_the_mean_is_left_out():
+    soil = Ground((SoilLayer(80.0, 0.3, 1800.0, 0.05, thickness=3.0),),
+                  SoilLayer(250.0, 0.3, 2000.0, 0.03))
+    ground = LayeredGround(soil, width=2.5, footprint=A)
+    kx = np.array([-40.0, -3.0, -0.2, 0.2, 3.0, 40.0])
+    for omega in (15.0, 150.0, 600.0):
+        c = ground.compliance(kx, omega)
+        assert np.all(c.imag > 0)                      # exp(-i omega t): the soil dissipates
+        assert np.allclose(c[::-1], c, rtol=1e-12)     # even in k_x
+    static = ground.compliance(np.concatenate([kx, [0.0]]), 0.0)
+    assert np.all(static[:-1].real > 0) and np.all(static.imag == 0)
+    assert static[-1] == 0                             # C(0, 0) := 0, the mean level
+
+
+def test_bad_arguments_are_named():
+    soil = Ground.homogeneous(100.0, 0.3, 1800.0, 0.05)
+    with pytest.raises(TypeError, match="ground must be a railtrack.model.ground.Ground"):
+        LayeredGround(rt.WinklerGround(1e8, A), B, A)
+    with pytest.raises(ValueError, match="width"):
+        LayeredGround(soil, -1.0, A)
+    with pytest.raises(ValueError, match="footprint"):
+        rt.solve(TRACK, TRAIN, rt.LinearFoundation(1e8), harmonics=2,
+                 ground=LayeredGround(soil, B, 0.7))         # a > L = 0.6 m
+
+
+def _thin_layer(h):
+    layer = SoilLayer(100.0, 0.3, 1900.0, thickness=h)
+    # a half-space 100 times as stiff in shear and 100 times as dense (mu 1e4 times the
+    # layer's): its own compliance ~ 1 / (mu_hs k_x) stays below 1e-3 of the layer's h / M
+    # at the k_x that carry the sum; only it is damped (the strip's quadrature needs a loss)
+    return layer, Ground((layer,), SoilLayer(1000.0, 0.3, 190000.0, 0.05))
+
+
+def test_a_thin_stiff_layer_on_a_rigid_base_is_the_winkler_spring_in_series():
+    # the law k_f in series with k_s = M a b / h (M = lambda + 2 mu) is one linear spring;
+    # the layer departs from Winkler by O(h / b) at the strip's edges and O((k_x h)^2) at
+    # short waves, so the difference must shrink as h does.  The mean: LayeredGround drops
+    # the uniform settlement C(0, 0) / L f_0 = h / (M b L) f_0, which is put back here.
+    k_f, m = 1.2e8, 6
+    spacing = float(rt.Passage(TRACK, TRAIN).sleeper_spacing)
+    errors = []
+    for h in (0.04, 0.02, 0.01):
+        layer, soil = _thin_layer(h)
+        k_s = layer.constrained_modulus * A * B / h
+        winkler = rt.solve(TRACK, TRAIN, rt.LinearFoundation(k_f * k_s / (k_f + k_s)),
+                           harmonics=m)
+        ours = rt.solve(TRACK, TRAIN, rt.LinearFoundation(k_f), harmonics=m,
+                        ground=LayeredGround(soil, B, A))
+        assert ours.converged
+        w, truth = np.asarray(ours.coefficients), np.array(winkler.coefficients, dtype=complex)
+        mean = truth.size // 2                               # two-sided: n = 0 in the middle
+        f_0 = k_f * k_s / (k_f + k_s) * truth[mean]          # the mean force per sleeper [N]
+        truth[mean] -= f_0 * h / (layer.constrained_modulus * B * spacing)
+        errors.append(np.max(np.abs(w - truth)) / np.max(np.abs(truth)))
+    assert errors[-1] < 1e-2 and errors[-1] < errors[0]
