@@ -47,25 +47,37 @@ def _thin_layer(h):
     return layer, Ground((layer,), SoilLayer(1000.0, 0.3, 190000.0, 0.05))
 
 
-def test_a_thin_stiff_layer_on_a_rigid_base_is_the_winkler_spring_in_series():
-    # the law k_f in series with k_s = M a b / h (M = lambda + 2 mu) is one linear spring;
-    # the layer departs from Winkler by O(h / b) at the strip's edges and O((k_x h)^2) at
-    # short waves, so the difference must shrink as h does.  The mean: LayeredGround drops
-    # the uniform settlement C(0, 0) / L f_0 = h / (M b L) f_0, which is put back here.
-    k_f, m = 1.2e8, 6
-    spacing = float(rt.Passage(TRACK, TRAIN).sleeper_spacing)
-    errors = []
-    for h in (0.04, 0.02, 0.01):
+def test_a_thin_layer_on_a_rigid_base_tends_to_the_winkler_compliance():
+    # C -> h / (M b) as h -> 0 at the k_x that carry the lattice sum (|k_x| <~ 2 pi / a):
+    # the O(h / b) edge effect and the O((k_x h)^2) of short waves shrink with h
+    kx = np.array([0.35, 2 * np.pi / 0.6, 30.0, 100.0])
+    worst = []
+    for h in (0.08, 0.04, 0.01):
         layer, soil = _thin_layer(h)
-        k_s = layer.constrained_modulus * A * B / h
+        c = LayeredGround(soil, B, A).compliance(kx, 16.0)
+        worst.append(np.max(np.abs(c * layer.constrained_modulus * B / h - 1)))
+    assert worst[-1] < 0.02 and worst[-1] < worst[1] < worst[0]
+
+
+def test_a_thin_stiff_layer_on_a_rigid_base_is_the_winkler_spring_in_series():
+    # end to end: the law k_f in series with k_s = M a b / h (M = lambda + 2 mu) is one linear
+    # spring, today's solve.  The mean: LayeredGround drops the uniform settlement
+    # C(0, 0) / L f_0 = h / (M b L) f_0 (infinite on a half-space), which is put back here.
+    # At h = 1 cm the compliance is within 1.3 % of Winkler (the test above); measured 1.2e-3
+    # at h = 1 cm against 1.7e-2 at h = 4 cm, and 8e-2 without the mean put back.  ~30 s: the
+    # strip's k_y quadrature for 129 wavenumbers per harmonic (docs/ground_coupling.md).
+    k_f, m, h = 1.2e8, 2, 0.01
+    spacing = float(rt.Passage(TRACK, TRAIN).sleeper_spacing)
+    layer, soil = _thin_layer(h)
+    k_s = layer.constrained_modulus * A * B / h
+    with pytest.warns(rt.TruncationWarning):
         winkler = rt.solve(TRACK, TRAIN, rt.LinearFoundation(k_f * k_s / (k_f + k_s)),
                            harmonics=m)
         ours = rt.solve(TRACK, TRAIN, rt.LinearFoundation(k_f), harmonics=m,
                         ground=LayeredGround(soil, B, A))
-        assert ours.converged
-        w, truth = np.asarray(ours.coefficients), np.array(winkler.coefficients, dtype=complex)
-        mean = truth.size // 2                               # two-sided: n = 0 in the middle
-        f_0 = k_f * k_s / (k_f + k_s) * truth[mean]          # the mean force per sleeper [N]
-        truth[mean] -= f_0 * h / (layer.constrained_modulus * B * spacing)
-        errors.append(np.max(np.abs(w - truth)) / np.max(np.abs(truth)))
-    assert errors[-1] < 1e-2 and errors[-1] < errors[0]
+    assert ours.converged
+    w, truth = np.asarray(ours.coefficients), np.array(winkler.coefficients, dtype=complex)
+    mean = truth.size // 2                                   # two-sided: n = 0 in the middle
+    f_0 = k_f * k_s / (k_f + k_s) * truth[mean]              # the mean force per sleeper [N]
+    truth[mean] -= f_0 * h / (layer.constrained_modulus * B * spacing)
+    assert np.max(np.abs(w - truth)) < 5e-3 * np.max(np.abs(truth))
