@@ -130,3 +130,29 @@ def test_a_cubic_law_on_a_layered_soil_converges_with_the_jacobian_of_finite_dif
     # times the agreement asked of the finite differences)
     rigid = residual_jacobian(harmonic_system(passage, law, m), d)
     assert np.max(np.abs(jacobian - rigid)) > 1e-3 * np.max(np.abs(numeric))
+
+
+def test_a_linear_law_on_a_layered_soil_is_eq_23_with_the_soil_in_series():
+    # consistency: per harmonic, the law's impedance k + i omega c in series with the soil's
+    # 1 / R_g (eq. G1 from the same compliance) in eq. (23); the solve goes through eq. (G2)
+    from railtrack.equations.ground_lattice import ground_receptance
+    from railtrack.equations.harmonic_balance import harmonic_system
+    from railtrack.model.passage import Passage
+
+    m, law = 2, rt.LinearFoundation.paper()
+    soil = Ground((SoilLayer(80.0, 0.3, 1800.0, 0.05, thickness=2.0),),
+                  SoilLayer(200.0, 0.3, 2000.0, 0.03))
+    ground = _Remembered(LayeredGround(soil, B, A))
+    with pytest.warns(rt.TruncationWarning):
+        grounded = rt.solve(TRACK, TRAIN, law, harmonics=m, ground=ground)
+    passage = Passage(TRACK, TRAIN)
+    omega = passage.fundamental_frequency * np.arange(m + 1)
+    r_g = ground_receptance(ground, omega, float(passage.speed), float(passage.sleeper_spacing))
+    system = harmonic_system(passage, law, m)
+    series = 1.0 / (1.0 / (law.stiffness + 1j * omega * law.damping) + r_g)
+    truth = -system.load / (system.operator + series / float(passage.sleeper_mass))
+    got = np.asarray(grounded.coefficients)[m:]
+    assert np.max(np.abs(got - truth)) <= 1e-8 * np.max(np.abs(truth))
+    rigid = -system.load / (system.operator + law.stiffness / float(passage.sleeper_mass)
+                            + 1j * omega * law.damping / float(passage.sleeper_mass))
+    assert np.max(np.abs(got - rigid)) > 1e-2 * np.max(np.abs(truth))   # the soil matters
