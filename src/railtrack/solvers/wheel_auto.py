@@ -21,6 +21,7 @@ import numpy as np
 from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..model.profile import smooth_rail
+from ..model.vehicle import Vehicle
 from ..model.wheel import Wheel
 from .arguments import require_count
 from .diagnosis import report
@@ -113,10 +114,17 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
     for wheels (their Floquet multipliers are not computed), and
     ``stability="full"`` is refused: run `railtrack.simulate_time_domain`
     with ``wheel=`` from this state instead.
+
+    A `railtrack.Vehicle` goes where a `Wheel` goes: its wheels are coupled
+    through the suspension (`railtrack.equations.wheel_receptance`); the
+    train must be its own (`Vehicle.check_train`: axles and static loads).
     """
-    if not isinstance(wheel, Wheel):
+    if not isinstance(wheel, (Wheel, Vehicle)):
         raise TypeError(f"wheel must be a railtrack.Wheel, e.g. Wheel({wheel!r}) for an unsprung "
-                        f"mass of {wheel!r} kg; got {type(wheel).__name__} {wheel!r}")
+                        f"mass of {wheel!r} kg, or a railtrack.Vehicle; got "
+                        f"{type(wheel).__name__} {wheel!r}")
+    if isinstance(wheel, Vehicle):
+        wheel.check_train(train)
     if method != "newton":
         raise ValueError(f"with wheels, solve uses method='newton' only; got {method!r}")
     refuse_unused("the wheel path", initial=(initial, "it starts from the static contact"),
@@ -126,7 +134,7 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
         raise ValueError("stability='full' is not available with wheels (their Floquet "
                          "multipliers are not computed): start railtrack.simulate_time_domain("
                          "..., wheel=...) from this state and watch whether it stays")
-    if wheel.primary_stiffness or wheel.primary_damping:
+    if isinstance(wheel, Wheel) and (wheel.primary_stiffness or wheel.primary_damping):
         raise ValueError("the harmonic balance takes an infinitely soft primary suspension "
                          "(the wheel carries its static load Q whatever it does); a primary "
                          "suspension is modelled by the time-domain ring, "
