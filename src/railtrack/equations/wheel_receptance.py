@@ -44,7 +44,8 @@ def wheel_receptance(wheel, omega, count: int) -> np.ndarray:
     omega : array_like
         omega_p != 0 [rad/s].
     count : int
-        K, the wheels of a wagon on the modelled rail (4 for a `Vehicle`).
+        K, the wheels of a wagon on the modelled rail (4 for a `Vehicle`; 4n
+        for a period of n wagons, `railtrack.Train.tiled`).
 
     Examples
     --------
@@ -60,10 +61,15 @@ def wheel_receptance(wheel, omega, count: int) -> np.ndarray:
     if np.any(omega == 0):
         raise ValueError("omega must be non-zero: the mean (p = 0) is the static balance")
     if isinstance(wheel, Vehicle):
-        if count != 4:
+        if count < 4 or count % 4:
             raise ValueError(f"a Vehicle has 4 wheels on the modelled rail per wagon; the "
                              f"train has {count} axles")
-        return 2.0 * np.linalg.inv(wheelset_dynamic_stiffness(wheel, omega))
+        one = 2.0 * np.linalg.inv(wheelset_dynamic_stiffness(wheel, omega))
+        # a period of n wagons (`railtrack.Train.tiled`): n vehicles, each on its own four
+        out = np.zeros(omega.shape + (count, count), dtype=complex)
+        for start in range(0, count, 4):
+            out[..., start:start + 4, start:start + 4] = one
+        return out
     if not isinstance(wheel, Wheel):
         raise TypeError(f"wheel must be a railtrack.Wheel or railtrack.Vehicle; got "
                         f"{type(wheel).__name__}")

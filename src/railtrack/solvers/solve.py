@@ -188,7 +188,8 @@ def solve(
     profile : callable, optional
         The rail-top profile r(x) [m] under the wheels (default: smooth;
         `railtrack.CosineDip` for a dipped weld); it must repeat with the
-        cell of sleepers.
+        cell of sleepers.  A `period` of n > 1 wagon lengths makes the steady
+        state n wagons long: the result's passage is ``train.tiled(n)``.
     stability : {"quick", "full", "off"}
         After a converged solve of a nonlinear law, look at its Floquet
         multipliers (`railtrack.solvers.stability_hint`): "quick" warns
