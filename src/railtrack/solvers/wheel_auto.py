@@ -163,7 +163,8 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
     if isinstance(wheel, Wheel) and (wheel.primary_stiffness or wheel.primary_damping):
         raise ValueError("the harmonic balance takes an infinitely soft primary suspension "
                          "(the wheel carries its static load Q whatever it does); a primary "
-                         "suspension is modelled by the time-domain ring, "
+                         "suspension under a moving body: pass wheel=railtrack.Vehicle(...); "
+                         "to a fixed body: the time-domain ring, "
                          "railtrack.simulate_time_domain(..., wheel=...)")
     profile = smooth_rail if profile is None else profile
     passage = Passage(track, train.tiled(wagons_in_period(profile, train)))
