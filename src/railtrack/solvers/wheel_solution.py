@@ -179,7 +179,7 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
 
         The rail field of `sleepers` (their reactions and the wheels' static
         loads) plus the free rail under the wheels' varying forces, eq.
-        (13.2), with the anchor at sleeper 0 corrected (`_anchor_sag`).  Any
+        (14.2), with the anchor at sleeper 0 corrected (`_anchor_sag`).  Any
         number of points, in blocks of bounded memory; x as
         `railtrack.CellSolution.rail_displacement` (too far or not finite: ValueError).
         """
@@ -193,7 +193,7 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
 
         `railtrack.CellSolution.rail_bending_moment` (the static loads' kinks in
         closed form, or ``kinks="series"``: the plain truncated series) plus EI
-        times the curvature of eq. (13.2), which is continuous across the wheel.
+        times the curvature of eq. (14.2), which is continuous across the wheel.
         """
         self._check_positions(x)
         ei = float(self.passage.rail_bending_stiffness)
