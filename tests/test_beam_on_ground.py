@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from railtrack.equations.beam_on_ground import beam_on_ground_dispersion, critical_speed_on_ground
+from railtrack.equations.critical_estimate import mezher_critical_speed, track_phase_speed
 from railtrack.equations.ground_strip import strip_stiffness
 from railtrack.equations.ground_trapped import trapped_strip_stiffness, with_damping
 from railtrack.equations.ground_waves import rayleigh_speed
@@ -76,3 +77,29 @@ def test_the_damped_response_peaks_near_the_undamped_critical_speed():
     a, b, _ = np.polyfit(speeds, w, 2)
     assert -b / (2 * a) == pytest.approx(v_cr, rel=0.02)            # -1.4 % measured
     assert w[1] > 1.2 * moving_load_displacement(damped, 1e7, 3000.0, 3.0, 0.0, 1e5)
+
+
+def test_the_free_track_speed_is_its_closed_form():
+    """m omega^2 = EI k^4 + k_p: omega / k for a free beam and on pads."""
+    omega = 2 * np.pi * 10.0
+    assert track_phase_speed(1e7, 500.0, 10.0) == pytest.approx(np.sqrt(omega) * (2e4) ** 0.25)
+    omega = 2 * np.pi * 30.0                                        # above sqrt(k_p/m) = 22.5 Hz
+    k = ((500.0 * omega**2 - 1e7) / 1e7) ** 0.25
+    assert track_phase_speed(1e7, 500.0, 30.0, 1e7) == pytest.approx(omega / k)
+    assert np.isnan(track_phase_speed(1e7, 500.0, 20.0, 1e7))         # below the cut-off
+
+
+def test_mezher_estimate_on_a_half_space_is_the_rayleigh_speed():
+    speed, _ = mezher_critical_speed(HALF, 1e7, 500.0)
+    assert speed == pytest.approx(C_R, rel=1e-8)
+
+
+def test_mezher_estimate_and_the_coupled_critical_speed_agree_in_order_on_soft_clay():
+    """A 6 m soft clay (65 m/s) over stiffer soil (200 m/s), a free beam on it: the quick
+    estimate 74.4 m/s, the coupled one 66.5 m/s (+12 %); both between the clay's c_R
+    and the half-space's c_s, the estimate above (it ignores the ground's stiffness)."""
+    estimate, _ = mezher_critical_speed(CLAY, 1e7, 500.0)
+    coupled = critical_speed_on_ground(CLAY, 1e7, 500.0, 3.0, points=16).speed
+    clay_rayleigh = rayleigh_speed(65.0, 0.49)
+    assert clay_rayleigh < coupled < estimate < 200.0
+    assert estimate / coupled == pytest.approx(1.12, abs=0.05)
