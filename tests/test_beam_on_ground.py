@@ -103,3 +103,20 @@ def test_mezher_estimate_and_the_coupled_critical_speed_agree_in_order_on_soft_c
     clay_rayleigh = rayleigh_speed(65.0, 0.49)
     assert clay_rayleigh < coupled < estimate < 200.0
     assert estimate / coupled == pytest.approx(1.12, abs=0.05)
+
+
+def test_the_deflection_lags_behind_a_moving_load_on_a_damped_ground():
+    """Statically symmetric; moving (+x) over a damped ground, the bowl trails the load.
+    With omega = -k v (the wrong sign for exp(-i omega t)) it would lead instead."""
+    ground = with_damping(HALF, 0.05)
+    w = moving_load_displacement(ground, 1e7, 3000.0, 3.0, [0.0, 80.0], 1e5,
+                                 positions=[-2.0, 0.0, 2.0], panels_per_decade=6)
+    assert w[0, 0] == pytest.approx(w[0, 2], rel=1e-9)
+    assert w[1, 0] > 2 * w[1, 2]                                     # 4.7e-4 m against 5.4e-5
+
+
+def test_a_pad_on_a_stiff_half_space_gives_the_winkler_critical_speed():
+    """The pad k_p in series with a ground 10^4 times stiffer: the bed is the pad."""
+    stiff = Ground.homogeneous(5000.0, 0.25, 2500.0)
+    ours = critical_speed_on_ground(stiff, EI, MASS, WIDTH, BED, points=12).speed
+    assert ours == pytest.approx((4 * BED * EI / MASS**2) ** 0.25, rel=0.005)   # -0.02 %
