@@ -16,7 +16,7 @@ import numpy as np
 
 from ..model.ground import Ground
 from .ground_stiffness import surface_flexibility
-from .ground_strip import _sine_tail, strip_stiffness  # noqa: F401  (strip_stiffness: doctest)
+from .ground_strip import _sine_tail
 
 __all__ = ["trapped_strip_stiffness", "with_damping"]
 
@@ -42,6 +42,7 @@ def trapped_strip_stiffness(ground: Ground, kx, omega, width: float) -> np.ndarr
 
     Examples
     --------
+    >>> from railtrack.equations.ground_strip import strip_stiffness
     >>> ground = Ground.homogeneous(100.0, 0.3, 1800.0)
     >>> k = trapped_strip_stiffness(ground, 1.0, 50.0, 3.0)
     >>> damped = strip_stiffness(with_damping(ground, 1e-9), 1.0, 50.0, 3.0)
