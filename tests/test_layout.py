@@ -36,6 +36,7 @@ PUBLIC = {
 }
 PUBLIC |= {"RailSection", "UIC60", "UIC54", "DesignSummary", "eisenmann_factor"}   # issue 29
 PUBLIC |= {"WinklerGround", "GroundSolution"}                                          # issue 31
+PUBLIC |= {"Vehicle"}   # issue 32: wheel=Vehicle in solve and simulate_time_domain
 
 
 def _modules():

@@ -187,3 +187,20 @@ def test_the_citation_check_reads_every_form_of_the_role():
     assert cited_keys(said) == {"knothe1993", "grassie1982", "a", "b"}
     assert cited_keys(said[3:]) == set()
     assert set(UNCITED) | set(KNOWN_UNCITED) <= set(BIB_KEYS)
+
+
+# The harmonic balance takes a vehicle above the wheels since issue 32
+# (`rt.solve(..., wheel=rt.Vehicle(...))`); chapter 14 said it could not.
+NO_VEHICLE_IN_THE_BALANCE = [
+    "in the harmonic balance, no primary suspension",
+    "do not yet have: a primary suspension in the harmonic balance",
+]
+
+
+@pytest.mark.parametrize("sentence", NO_VEHICLE_IN_THE_BALANCE)
+def test_the_wheel_chapter_knows_the_balance_takes_a_vehicle(sentence):
+    import railtrack as rt
+
+    assert "Vehicle" in rt.solve.__doc__  # the premise: solve documents it
+    text = " ".join(markdown_cells(BOOK / "14_wheel_on_the_rail.ipynb"))
+    assert sentence not in text

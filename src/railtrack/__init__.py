@@ -65,6 +65,7 @@ from .model.gap import GapFoundation
 from .solvers.cell_solution import CellSolution
 from .studies.random_support import RandomSupport, random_support
 from .model.wheel import Wheel
+from .model.vehicle import Vehicle
 from .model.profile import CosineDip
 from .solvers.wheel_solution import WheelSolution
 from .model.timoshenko import TimoshenkoRail
@@ -106,6 +107,7 @@ __all__ = [
     "random_support",
     "RandomSupport",
     "Wheel",
+    "Vehicle",
     "CosineDip",
     "WheelSolution",
     "TimoshenkoRail",

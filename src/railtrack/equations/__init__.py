@@ -15,8 +15,13 @@ wheel on the rail `wheel_train_receptance` (the free rail under wheels whose
 forces vary) and `timoshenko_receptance` (eq. 3 with shear and rotary inertia);
 for the layered ground beneath (issue 31) `ground_stiffness` (its surface
 flexibility, Kausel & Roesset's stiffness matrices), `ground_waves` (the
-Rayleigh wave and the fundamental mode's dispersion) and `ground_strip` (the
-equivalent stiffness under a strip along the track, Dieterman & Metrikine);
+Rayleigh wave and the fundamental mode's dispersion), `ground_strip` (the
+equivalent stiffness under a strip along the track, Dieterman & Metrikine),
+`ground_trapped` (the same, undamped, where no ground wave radiates),
+`beam_on_ground` (a continuously supported track's dispersion on the ground
+and its critical speed), `critical_estimate` (the quick estimate where the
+free track's and the ground's dispersion curves cross, Mezher et al. 2016) and
+`moving_load_ground` (its steady response to a moving load);
 for the vehicle above the wheels `vehicle_matrices` (its M, C, K, natural
 frequencies and static wheelset loads) and `vehicle_response` (its dynamic
 stiffness at the wheelsets, its steady ride over a rigid irregular track).

@@ -24,8 +24,9 @@ mean height relative to the rail under it, y_k (below).
   ``sum_n sum_j' R_{j',n} e^{i kappa (d_k + x_j')} / (EI Lambda (kappa^4 - k_n^4))``,
   kappa = omega_n/v + 2 pi r/Lambda at wheel harmonic p = -r G, and from the
   wheels, ``sum_k' U_p(d_k' - d_k) (-P_{k',p})``
-  (`railtrack.equations.wheel_train_receptance`), and the wheel
-  ``z_p = -P_p / (m_w omega_p^2)``.  The mean p = 0 of the rail under the
+  (`railtrack.equations.wheel_train_receptance`), and the wheels
+  ``z_p = A(omega_p) P_p`` (`railtrack.equations.wheel_receptance`: -1 / (m_w omega_p^2)
+  for a `Wheel`, the suspension coupling a `Vehicle`'s four).  The mean p = 0 of the rail under the
   wheel contains the rail's rigid lift, infinite in each part and finite in
   their sum; it is left out, and y_k = z_k0 - u_k0 takes its place: delta is exact.
 """
@@ -39,10 +40,11 @@ import numpy as np
 from ..model.passage import Passage
 from .cell_harmonic_balance import _forces, _synthesize, cell_operators
 from .receptance import bending_wavenumber
+from .wheel_receptance import wheel_receptance
 from .wheel_train_receptance import wheel_train_receptance
 
 __all__ = ["WheelSystem", "wheel_system", "wheel_residual", "wheel_loads", "rail_under_wheels",
-           "compression", "profile_harmonics", "contact_gap"]
+           "compression", "profile_harmonics", "contact_gap", "wheels_under"]
 
 
 def contact_gap(a: np.ndarray, q: np.ndarray) -> np.ndarray:
@@ -70,7 +72,7 @@ class WheelSystem(NamedTuple):
     sleeper_phase: np.ndarray  # (2m+1, N): e^{i omega_n x_j / v}
     mode_of_wheel: np.ndarray  # (lmax,): r_l = p_l / G mod N
     between_wheels: np.ndarray  # (lmax, K, K): U_p(d_k' - d_k)
-    wheel_mobility: np.ndarray  # (lmax,): -1/(m_w omega_p^2)
+    wheel_receptance: np.ndarray  # (lmax, K, K): z_p = A P_p, A = -1/(m_w omega_p^2) for a Wheel
     samples: int
     sleeper_weight: np.ndarray  # (N,) [N], M_j g
 
@@ -118,7 +120,7 @@ def wheel_system(passage: Passage, cell, wheel, harmonics: int, samples: int) ->
     offsets = positions[None, :] - positions[:, None]                      # d_k' - d_k
     between = wheel_train_receptance(passage, base * grid, offsets) if grid.size \
         else np.zeros((0, positions.size, positions.size), dtype=complex)
-    mobility = -1.0 / (wheel.unsprung_mass * (base * grid) ** 2)
+    mobility = wheel_receptance(wheel, base * grid, positions.size)
     return WheelSystem(ops, grid, mode, load_gap, wheel_phase, sleeper_shift, basis, weight,
                        harmonic_phase, sleeper_phase,
                        (grid // groups) % n_sl, between, mobility, int(samples),
@@ -183,13 +185,18 @@ def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
     reaction = -np.concatenate([np.conj(pads[:, :0:-1]), pads], axis=1)   # (N, 2m+1), R = -p
     rail = (rail_under_wheels(system, reaction)
             - np.einsum("lkq,ql->kl", system.between_wheels, forces).T).T
-    delta = compression(passage, profile, system, rail - system.wheel_mobility * forces, lift)
+    delta = compression(passage, profile, system, rail - wheels_under(system, forces), lift)
     hertz = wheel.contact_force(delta)
     harmonics = np.fft.rfft(hertz, axis=-1) / samples
     contacts = np.empty((forces.shape[0], grid.size + 1), dtype=complex)
     contacts[:, 0] = harmonics[:, 0].real - np.asarray(passage.axle_loads)
     contacts[:, 1:] = harmonics[:, grid] - forces
     return sleepers, contacts, delta, hertz
+
+
+def wheels_under(system: WheelSystem, forces: np.ndarray) -> np.ndarray:
+    """z_p = A(omega_p) P_p, the wheels' displacement harmonics (K, lmax) [m] under P (K, lmax)."""
+    return np.einsum("lkq,ql->kl", system.wheel_receptance, forces)
 
 
 def wheel_loads(system: WheelSystem, forces: np.ndarray) -> np.ndarray:

@@ -1,4 +1,4 @@
-"""The free rail under a train of wheels whose forces vary in time: eq. (13.2) of the book.
+"""The free rail under a train of wheels whose forces vary in time: eq. (14.2) of the book.
 
 A wheel at x = vt - d in every wagon (period H along the track) pushes the
 rail up with a force whose harmonic p is ``e^{i omega_p t}`` (omega_p = p 2 pi v/H).

@@ -53,7 +53,7 @@ FIELDS: dict[str, dict[str, tuple[str, str | None]]] = {
                     wheelset_mass=("kg", None), secondary_stiffness=("N/m", None),
                     secondary_damping=("N s/m", None), primary_stiffness=("N/m", None),
                     primary_damping=("N s/m", None), bogie_spacing=("m", None),
-                    wheelbase=("m", None)),
+                    wheelbase=("m", None), hertz_constant=("N/m^1.5", "hertz_constant")),
     "TimoshenkoRail": dict(shear_stiffness=("N", "shear_stiffness"),
                            rotary_inertia=("kg m", "rotary_inertia")),
     "SleeperCell": {**{k: _TRACK[k] for k in ("sleeper_mass", "pad_stiffness", "pad_damping")},

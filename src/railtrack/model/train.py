@@ -160,6 +160,27 @@ class Train:
         """Return a copy with some fields changed (validated again)."""
         return dataclasses.replace(self, **changes)
 
+    def tiled(self, wagons: int) -> "Train":
+        """`wagons` wagons of this train as one wagon of length n H, the axles repeated [m, N].
+
+        For a steady state that repeats every n wagons (a rail-top profile of
+        period n H): its wheels are then the n H-long wagon's 4n axles.
+
+        Examples
+        --------
+        >>> Train.paper().tiled(2).axle_positions
+        (0.0, 3.0, 18.0, 21.0)
+        """
+        if isinstance(wagons, bool) or not isinstance(wagons, (int, np.integer)) or wagons < 1:
+            raise ValueError(f"wagons must be an integer >= 1; got {wagons!r}")
+        if wagons == 1:
+            return self
+        length = float(self.wagon_length)
+        positions = (length * np.arange(wagons)[:, None]
+                     + np.asarray(self.axle_positions, dtype=float)).ravel()
+        return Train(wagons * length, tuple(positions.tolist()),
+                     tuple(np.tile(self.axle_loads, wagons).tolist()), self.speed)
+
     @property
     def axle_count(self) -> int:
         """Number of axles per wagon."""

@@ -47,6 +47,10 @@ class Vehicle:
         2a > 0 [m], between the bogie centres.
     wheelbase : float
         2b > 0 [m], between a bogie's wheelsets; < bogie_spacing.
+    hertz_constant : float
+        C_H > 0 [N/m^1.5] of each wheel on the rail (default `HERTZ_UIC60`):
+        with it a Vehicle goes wherever a `Wheel` goes (``railtrack.solve(...,
+        wheel=vehicle)``, ``simulate_time_domain(..., wheel=vehicle)``).
 
     Examples
     --------
@@ -68,13 +72,14 @@ class Vehicle:
     primary_damping: float
     bogie_spacing: float
     wheelbase: float
+    hertz_constant: float = HERTZ_UIC60
 
     def __post_init__(self) -> None:
         quantities_to_si(self)
         units = dict(body_mass="kg", body_pitch_inertia="kg m^2", bogie_mass="kg",
                      bogie_pitch_inertia="kg m^2", wheelset_mass="kg",
                      secondary_stiffness="N/m", primary_stiffness="N/m",
-                     bogie_spacing="m", wheelbase="m")
+                     bogie_spacing="m", wheelbase="m", hertz_constant="N/m^1.5")
         for name, unit in units.items():
             require_positive(name, getattr(self, name), unit)
         require_non_negative("secondary_damping", self.secondary_damping, "N s/m")
@@ -147,10 +152,67 @@ class Vehicle:
         ([0.0, 2.56, 19.0, 21.56], 54.55)
         """
         a2, b2 = float(self.bogie_spacing), float(self.wheelbase)
-        load = self.total_mass * float(gravity) / 8
+        load = self.static_wheel_load(gravity)
         return Train(wagon_length, (0.0, b2, a2, a2 + b2), (load,) * 4, speed)
 
-    def wheel(self, hertz_constant: float = HERTZ_UIC60) -> Wheel:
+    @property
+    def unsprung_mass(self) -> float:
+        """m_w / 2 [kg]: the wheel's share of its wheelset on the modelled rail."""
+        return 0.5 * float(self.wheelset_mass)
+
+    @property
+    def contact(self) -> Wheel:
+        """The wheel on the modelled rail as the contact sees it: m_w / 2 on C_H, no suspension.
+
+        Its Hertz law is the vehicle's; the suspension above it is the vehicle's
+        own business (`railtrack.equations.wheel_receptance`).
+        """
+        return Wheel(self.unsprung_mass, self.hertz_constant)
+
+    def contact_force(self, compression) -> np.ndarray:
+        """P = C_H max(delta, 0)^{3/2} [N] for the compression delta [m] (`Wheel`)."""
+        return self.contact.contact_force(compression)
+
+    def contact_stiffness(self, compression) -> np.ndarray:
+        """dP/d delta [N/m] (`Wheel`)."""
+        return self.contact.contact_stiffness(compression)
+
+    def static_compression(self, load: float) -> float:
+        """delta_0 = (Q / C_H)^{2/3} [m] under the wheel load Q [N] (`Wheel`)."""
+        return self.contact.static_compression(load)
+
+    def static_wheel_load(self, gravity: float = STANDARD_GRAVITY) -> float:
+        """Each wheel's static load on the modelled rail, (m_c + 2 m_b + 4 m_w) g / 8 [N]."""
+        return self.total_mass * float(gravity) / 8
+
+    def check_train(self, train: Train, gravity: float = STANDARD_GRAVITY) -> None:
+        """Raise ValueError unless `train`'s axles and wheel loads are this vehicle's.
+
+        The axles must sit at 0, 2b, 2a, 2a + 2b behind the first (1e-9 m) and
+        each wheel load be (m_c + 2 m_b + 4 m_w) g / 8 (relative 1e-6): the
+        train `Vehicle.train` builds.
+
+        Examples
+        --------
+        >>> car = Vehicle.manchester()
+        >>> car.check_train(car.train(26.4, 45.0))           # silent: they agree
+        """
+        expected = self.train(train.wagon_length, train.speed, gravity)
+        axles = np.asarray(train.axle_positions, dtype=float)
+        want = np.asarray(expected.axle_positions, dtype=float)
+        if axles.shape != want.shape or np.max(np.abs(axles - axles[0] - want)) > 1e-9:
+            raise ValueError(f"the train's axle_positions {axles.tolist()} m are not the "
+                             f"vehicle's {want.tolist()} m (0, 2b, 2a, 2a + 2b): build the "
+                             f"train with vehicle.train(wagon_length, speed)")
+        loads = np.asarray(train.axle_loads, dtype=float)
+        load = self.static_wheel_load(gravity)
+        if np.max(np.abs(loads - load)) > 1e-6 * load:
+            raise ValueError(f"the train's axle_loads {loads.tolist()} N are not the vehicle's "
+                             f"static wheel loads, {load:.6g} N each on the modelled rail "
+                             f"((m_c + 2 m_b + 4 m_w) g / 8): build the train with "
+                             f"vehicle.train(wagon_length, speed)")
+
+    def wheel(self, hertz_constant: float | None = None) -> Wheel:
         """Today's `Wheel` on the modelled rail: what each wheel becomes under a fixed body.
 
         Half a wheelset (m_w / 2) on half its primary suspension (k_1 / 2,
@@ -162,5 +224,6 @@ class Vehicle:
         >>> Vehicle.manchester().wheel().unsprung_mass
         906.5
         """
+        hertz_constant = self.hertz_constant if hertz_constant is None else hertz_constant
         return Wheel(0.5 * self.wheelset_mass, hertz_constant, 0.5 * self.primary_stiffness,
                      0.5 * self.primary_damping)

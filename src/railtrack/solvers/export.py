@@ -76,6 +76,10 @@ FIELD_UNITS = {
     "unsprung_mass": "kg", "hertz_constant": "N m-1.5", "primary_stiffness": "N m-1",
     "primary_damping": "N s m-1", "depth": "m", "length": "m", "period": "m", "centre": "m",
     "shear_stiffness": "N", "rotary_inertia": "kg m",
+    # vehicle
+    "body_mass": "kg", "body_pitch_inertia": "kg m2", "bogie_mass": "kg",
+    "bogie_pitch_inertia": "kg m2", "wheelset_mass": "kg", "secondary_stiffness": "N m-1",
+    "secondary_damping": "N s m-1", "bogie_spacing": "m", "wheelbase": "m",
 }
 """UDUNITS unit of each input field by its name (all inputs are SI inside the package)."""
 

@@ -189,7 +189,9 @@ def wheel_rows(s) -> tuple[str, Rows]:
     title = (f"WheelSolution of {loads.size} wheels on {s.sleepers.sleepers} sleepers: "
              f"{'converged' if s.converged else 'NOT converged'}")
     rows = [("case", case_text(s.passage)),
-            ("wheel", f"m_w = {float(wheel.unsprung_mass):.4g} kg, C_H = "
+            ("wheel", ("" if not hasattr(wheel, "body_mass") else
+                       f"under a Vehicle (body {float(wheel.body_mass):.4g} kg), ")
+                      + f"m_w = {float(wheel.unsprung_mass):.4g} kg, C_H = "
                       f"{float(wheel.hertz_constant):.3g} N/m^1.5, profile "
                       f"{type(s.profile).__name__}"),
             ("foundation", law_text(s.sleepers.cell.foundations)), ("solve", solve_text(s)),

@@ -171,9 +171,15 @@ def solve(
         (`railtrack.solvers.speed_path`) and land on this speed; the message
         says so.  Where several solutions exist this finds one of them:
         `railtrack.continuation` lists them all.  False: give up at once.
-    wheel : Wheel, optional
+    wheel : Wheel or Vehicle, optional
         Put a wheel of this unsprung mass on a Hertz spring under every axle
-        (`railtrack.Wheel`); returns a `WheelSolution`
+        (`railtrack.Wheel`), or a whole `railtrack.Vehicle` above the wheels:
+        one wheel per wheelset on the modelled rail, the four of a wagon
+        coupled through bogies and body (the train must be
+        ``vehicle.train(H, v)``; the same residual with the wheels' receptance
+        generalised, so every check of the wheel path applies: one entry point,
+        as a `Wheel` is a vehicle with an infinitely heavy body on an
+        infinitely soft primary).  Returns a `WheelSolution`
         (`railtrack.solvers.wheel_auto`): contact forces, wheel and sleeper
         histories.  Newton only; `accuracy`, `tol`, `max_iterations`,
         `samples`, `check_foundation` and `strict` apply, `initial`, `split` and
@@ -184,7 +190,8 @@ def solve(
     profile : callable, optional
         The rail-top profile r(x) [m] under the wheels (default: smooth;
         `railtrack.CosineDip` for a dipped weld); it must repeat with the
-        cell of sleepers.
+        cell of sleepers.  A `period` of n > 1 wagon lengths makes the steady
+        state n wagons long: the result's passage is ``train.tiled(n)``.
     ground : GroundCompliance, optional
         The law between each sleeper and this ground, which couples them all
         (`railtrack.model.ground_protocol`); a `GroundSolution`

@@ -21,6 +21,7 @@ import numpy as np
 from ..model.cell import SleeperCell
 from ..model.passage import Passage
 from ..model.profile import smooth_rail
+from ..model.vehicle import Vehicle
 from ..model.wheel import Wheel
 from .arguments import require_count
 from .diagnosis import report
@@ -38,12 +39,32 @@ from .wheel_rounds import auto_wheels, wrap
 from .wheel_solution import WheelSolution
 from .wheel_truncation import wheel_truncation
 
-__all__ = ["solve_track_wheels", "wheel_cell"]
+__all__ = ["solve_track_wheels", "wheel_cell", "wagons_in_period"]
 
 DEFAULT_WHEEL_TOL = 1e-9
 """The contact residual over the largest wheel load Q at which a wheel solve stops [-]."""
 DEFAULT_STEPS = 40
 """Newton steps of a wheel solve, unless max_iterations says otherwise."""
+
+
+def wagons_in_period(profile, train) -> int:
+    """n, when the profile's `period` is n > 1 wagon lengths; else 1.
+
+    The steady state then repeats every n wagons only: the solve runs on
+    ``train.tiled(n)``, one wagon n H long with the n wagons' wheels.
+
+    Examples
+    --------
+    >>> import railtrack as rt
+    >>> wagons_in_period(rt.CosineDip(1e-3, 1.0, 36.0), rt.Train.paper())   # H = 18 m
+    2
+    """
+    period = getattr(profile, "period", None)
+    if period is None:
+        return 1
+    ratio = float(period) / float(train.wagon_length)
+    whole = int(round(ratio))
+    return whole if whole > 1 and abs(ratio - whole) <= 1e-9 * ratio else 1
 
 
 def wheel_cell(passage: Passage, support, profile) -> SleeperCell:
@@ -113,10 +134,23 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
     for wheels (their Floquet multipliers are not computed), and
     ``stability="full"`` is refused: run `railtrack.simulate_time_domain`
     with ``wheel=`` from this state instead.
+
+    A `railtrack.Vehicle` goes where a `Wheel` goes: its wheels are coupled
+    through the suspension (`railtrack.equations.wheel_receptance`); the
+    train must be its own (`Vehicle.check_train`: axles and static loads).
+
+    A profile whose `period` is n > 1 wagon lengths (a random rail realised
+    over several wagons) makes the steady state n wagons long: the solve runs
+    on ``train.tiled(n)`` (`wagons_in_period`), and the solution's passage,
+    period and wheels (4n for a four-axle wagon, wagon by wagon) are those of
+    the n wagons.
     """
-    if not isinstance(wheel, Wheel):
+    if not isinstance(wheel, (Wheel, Vehicle)):
         raise TypeError(f"wheel must be a railtrack.Wheel, e.g. Wheel({wheel!r}) for an unsprung "
-                        f"mass of {wheel!r} kg; got {type(wheel).__name__} {wheel!r}")
+                        f"mass of {wheel!r} kg, or a railtrack.Vehicle; got "
+                        f"{type(wheel).__name__} {wheel!r}")
+    if isinstance(wheel, Vehicle):
+        wheel.check_train(train)
     if method != "newton":
         raise ValueError(f"with wheels, solve uses method='newton' only; got {method!r}")
     refuse_unused("the wheel path", initial=(initial, "it starts from the static contact"),
@@ -126,13 +160,14 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
         raise ValueError("stability='full' is not available with wheels (their Floquet "
                          "multipliers are not computed): start railtrack.simulate_time_domain("
                          "..., wheel=...) from this state and watch whether it stays")
-    if wheel.primary_stiffness or wheel.primary_damping:
+    if isinstance(wheel, Wheel) and (wheel.primary_stiffness or wheel.primary_damping):
         raise ValueError("the harmonic balance takes an infinitely soft primary suspension "
                          "(the wheel carries its static load Q whatever it does); a primary "
-                         "suspension is modelled by the time-domain ring, "
+                         "suspension under a moving body: pass wheel=railtrack.Vehicle(...); "
+                         "to a fixed body: the time-domain ring, "
                          "railtrack.simulate_time_domain(..., wheel=...)")
-    passage = Passage(track, train)
     profile = smooth_rail if profile is None else profile
+    passage = Passage(track, train.tiled(wagons_in_period(profile, train)))
     cell = wheel_cell(passage, support, profile)
     check_laws_at_rest(cell.foundations, cell.pad_stiffness, cell.pad_damping, check_foundation)
     tol = checked_tol(tol, DEFAULT_WHEEL_TOL)

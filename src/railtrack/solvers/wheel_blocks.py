@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..equations.wheel_harmonic_balance import wheels_under
+
 __all__ = ["class_blocks", "apply_blocks", "blocks_diagonal", "SPARSE_TOL"]
 
 SPARSE_TOL = 1e-13
@@ -92,7 +94,7 @@ def apply_blocks(system, blocks, forces: np.ndarray) -> np.ndarray:
         load = by_harmonic[cols].ravel()
         rail[rows] += (matrix @ (np.conj(load) if conjugate else load)).reshape(-1, k_w)
     rail = rail - (system.between_wheels @ by_harmonic[..., None])[..., 0]
-    return rail.T - system.wheel_mobility * forces
+    return rail.T - wheels_under(system, forces)
 
 
 def blocks_diagonal(system, blocks) -> np.ndarray:
@@ -104,7 +106,7 @@ def blocks_diagonal(system, blocks) -> np.ndarray:
         common, at_row, at_col = np.intersect1d(rows, cols, return_indices=True)
         entries = matrix.reshape(rows.size, k_w, cols.size, k_w)[at_row, :, at_col, :]
         (with_conj if conjugate else with_u)[common] += entries
-    own = system.between_wheels + system.wheel_mobility[:, None, None] * np.eye(k_w)
+    own = system.between_wheels + system.wheel_receptance
     by_re, by_im = with_u + with_conj - own, 1j * (with_u - with_conj - own)
     return np.concatenate([np.concatenate([by_re.real, by_im.real], axis=2),
                            np.concatenate([by_re.imag, by_im.imag], axis=2)], axis=1)

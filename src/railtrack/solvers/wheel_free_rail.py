@@ -1,4 +1,4 @@
-"""The free rail under the wheels' varying forces, eq. (13.2), for a `WheelSolution`.
+"""The free rail under the wheels' varying forces, eq. (14.2), for a `WheelSolution`.
 
 A `railtrack.WheelSolution`'s rail is the rail field of its sleepers (their
 reactions and the wheels' static loads) plus this: the infinite rail, free
@@ -19,7 +19,7 @@ __all__ = ["free_rail"]
 
 
 def free_rail(solution, t: ArrayLike, x: ArrayLike, derivative: int) -> np.ndarray:
-    """The free rail under a `WheelSolution`'s varying wheel forces, eq. (13.2) at (t, x).
+    """The free rail under a `WheelSolution`'s varying wheel forces, eq. (14.2) at (t, x).
 
     Its displacement [m] (``derivative=0``) or curvature [1/m] (2), shape of
     ``broadcast(t, x)``.

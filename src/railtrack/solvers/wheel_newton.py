@@ -9,7 +9,8 @@ are the constant-force cell with one more load, W P
 contact residual B(P, y) = [C_H max(delta, 0)^{3/2}]_p - P_p (- Q_k at p = 0).
 Its Jacobian is ``K C - I`` (the book's chapter 14): K the Hertz tangent
 1.5 C_H delta^{1/2} on the AFT samples and C the contact's compression per
-unit P and y: the wheel's own receptance 1/(m_w omega_p^2) less the track's
+unit P and y: the wheels' receptance A(omega_p) less the track's (A = -1/(m_w omega_p^2)
+for a `Wheel`, 2 D^-1 coupling a `Vehicle`'s wheels, `railtrack.equations.wheel_receptance`),
 receptance under the moving wheels, the linear map P -> W P -> c ->
 reactions -> rail under the wheels, linearised exactly: each sleeper's mean
 tangent, and for the sleepers whose tangent varies (a hanging sleeper that

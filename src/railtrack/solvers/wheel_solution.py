@@ -22,6 +22,7 @@ from numpy.typing import ArrayLike
 
 from ..equations.moment import kink_sum
 from ..equations.positions import check_positions, checked_times
+from ..equations.wheel_receptance import wheel_receptance
 from ..model.passage import Passage
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
@@ -42,7 +43,7 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
     Attributes
     ----------
     passage : Passage
-    wheel : Wheel
+    wheel : Wheel or Vehicle
     profile : callable
         r(x) [m], the rail-top profile.
     harmonics : int
@@ -133,12 +134,17 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
     def wheel_displacement(self, t: ArrayLike) -> np.ndarray:
         """z_k(t) [m], positive upward, from the undeformed track; shape (K,) + t.shape.
 
-        Its harmonics are ``-P_p / (m_w omega_p^2)``; its mean is the rail's
+        Its harmonics are ``A(omega_p) P_p`` (`railtrack.equations.wheel_receptance`:
+        ``-P_p / (m_w omega_p^2)`` for a `Wheel`); its mean is the rail's
         mean under the wheel minus the mean compression.
         """
         omega = 2 * np.pi * self.grid / self.period
-        fluctuation = self._series(-self.contact_harmonics / (self.wheel.unsprung_mass
-                                                              * omega**2), t)
+        if self.grid.size:
+            receptance = wheel_receptance(self.wheel, omega, self.contact_harmonics.shape[0])
+            harmonics = np.einsum("lkq,ql->kl", receptance, self.contact_harmonics)
+        else:
+            harmonics = self.contact_harmonics
+        fluctuation = self._series(harmonics, t)
         return fluctuation + self._mean_height.reshape((-1,) + (1,) * np.ndim(t))
 
     @cached_property
@@ -173,7 +179,7 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
 
         The rail field of `sleepers` (their reactions and the wheels' static
         loads) plus the free rail under the wheels' varying forces, eq.
-        (13.2), with the anchor at sleeper 0 corrected (`_anchor_sag`).  Any
+        (14.2), with the anchor at sleeper 0 corrected (`_anchor_sag`).  Any
         number of points, in blocks of bounded memory; x as
         `railtrack.CellSolution.rail_displacement` (too far or not finite: ValueError).
         """
@@ -187,7 +193,7 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
 
         `railtrack.CellSolution.rail_bending_moment` (the static loads' kinks in
         closed form, or ``kinks="series"``: the plain truncated series) plus EI
-        times the curvature of eq. (13.2), which is continuous across the wheel.
+        times the curvature of eq. (14.2), which is continuous across the wheel.
         """
         self._check_positions(x)
         ei = float(self.passage.rail_bending_stiffness)

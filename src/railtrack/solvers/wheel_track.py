@@ -23,7 +23,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..equations.wheel_harmonic_balance import rail_under_wheels, wheel_loads
+from ..equations.wheel_harmonic_balance import rail_under_wheels, wheel_loads, wheels_under
 from .wheel_blocks import apply_blocks, blocks_diagonal, class_blocks
 from .wheel_sleepers import varying_response, varying_sleepers
 
@@ -107,7 +107,7 @@ def _diagonal(system, positive, negative, lmax, m):
                                                               np.conj(minus))
     with_conj = through(upper, positive, s_minus, minus) + through(lower, negative, s_plus,
                                                                    np.conj(plus))
-    own = system.between_wheels + system.wheel_mobility[:, None, None] * np.eye(k_w)
+    own = system.between_wheels + system.wheel_receptance
     by_re, by_im = with_u + with_conj - own, 1j * (with_u - with_conj - own)
     return np.concatenate([np.concatenate([by_re.real, by_im.real], axis=2),
                            np.concatenate([by_re.imag, by_im.imag], axis=2)], axis=1)
@@ -140,4 +140,4 @@ def track_response(system, operator: TrackOperator, forces: np.ndarray) -> np.nd
     reaction = -np.concatenate([np.conj(pads[:0:-1]), pads], axis=0).T     # (N, 2m+1)
     rail = rail_under_wheels(system, reaction)                             # (l, K)
     rail = rail - (system.between_wheels @ forces.T[..., None])[..., 0]
-    return rail.T - system.wheel_mobility * forces
+    return rail.T - wheels_under(system, forces)

@@ -41,6 +41,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..model.profile import smooth_rail
+from ..model.vehicle import Vehicle
 from ..model.wheel import Wheel
 from .fem import contact_compliance, contact_shapes
 from .newmark import CondensedSystem, NewmarkStepper, _sleeper_projector, evaluate_law
@@ -50,15 +51,19 @@ from .wheel_contacts import solve_contacts
 __all__ = ["check_wheel_arguments", "attach_wheels", "WheelStepper", "solve_contacts"]
 
 
-def check_wheel_arguments(wheel, profile, start) -> None:
-    """Refuse a profile without a wheel, a wheel that is not a `Wheel`, or a non-static start."""
+def check_wheel_arguments(wheel, profile, start, train=None) -> None:
+    """Refuse a profile without a wheel, a wheel that is not a `Wheel` or `Vehicle`,
+    a vehicle whose train is not its own (`Vehicle.check_train`), or a non-static start."""
     if wheel is None:
         if profile is not None:
             raise ValueError("a rail-top profile needs wheels to roll on it: pass wheel=Wheel(...) "
                              "(constant moving forces do not feel the profile)")
         return
-    if not isinstance(wheel, Wheel):
-        raise TypeError(f"wheel must be a railtrack.model.wheel.Wheel; got {type(wheel).__name__}")
+    if not isinstance(wheel, (Wheel, Vehicle)):
+        raise TypeError(f"wheel must be a railtrack.model.wheel.Wheel or a railtrack.Vehicle; "
+                        f"got {type(wheel).__name__}")
+    if isinstance(wheel, Vehicle) and train is not None:
+        wheel.check_train(train)
     if not (isinstance(start, str) and start == "static"):
         raise ValueError("with wheels the ring starts from its static state only (start='static': "
                          f"the wheels at rest on the loaded track); got start={start!r}")
@@ -78,6 +83,7 @@ def attach_wheels(stepper: NewmarkStepper, wheel: Wheel, profile, u: np.ndarray,
     ----------
     stepper : NewmarkStepper
     wheel : Wheel
+        (A `Vehicle`: `railtrack.timedomain.ring_vehicle.attach_vehicle`.)
     profile : callable or None
         r(x) [m]; None is the smooth rail.
     u : ndarray, shape (n_dofs,)

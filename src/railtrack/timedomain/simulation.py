@@ -42,6 +42,7 @@ from .fem import ring_mesh, sleepers_on_ring, wheel_load_entries
 from .ring_cell import ring_cell, ring_train
 from .ring_fields import SleeperRecorder
 from .ring_outputs import ring_outputs, watched_dofs
+from .ring_vehicle import attach_vehicle
 from .ring_wheels import attach_wheels, check_wheel_arguments
 from .ring_state import initial_state
 from ..model.cell import SleeperCell
@@ -52,6 +53,7 @@ from .timestep import TimeStepWarning, check_step_error, check_steps_per_period
 from ..model.passage import Passage
 from .td_solution import TimeDomainSolution
 from ..model.track import Track
+from ..model.vehicle import Vehicle
 from ..model.train import Train
 from ..solvers.progress import progress_bar, show_progress
 from ..solvers.solution import ConvergenceWarning
@@ -190,7 +192,7 @@ def simulate_time_domain(
         wagons x H, `railtrack.timedomain.ring_cell.ring_train`), so that it
         can carry a cell longer than one wagon.  The period, the steps per
         period and the result's passage are then the tiled train's.
-    wheel : railtrack.model.wheel.Wheel, optional
+    wheel : railtrack.model.wheel.Wheel or railtrack.Vehicle, optional
         Each axle of the ring's train becomes a wheel of this unsprung mass on
         a Hertz spring (`railtrack.timedomain.ring_wheels`), started at rest on
         the statically loaded track (start "static" only); the result then has
@@ -199,8 +201,10 @@ def simulate_time_domain(
         peak) and balance the wheel loads.  The step should resolve the
         contact's frequency sqrt(k_H / m_w) (k_H = 1.5 C_H delta_0^{1/2}):
         an unresolved stiff contact (a 1 kg wheel on C_H = 1e16) is pumped
-        by the average-acceleration step and does not converge.  Default:
-        constant moving forces.
+        by the average-acceleration step and does not converge.  A
+        `railtrack.Vehicle` puts half a vehicle (body, bogies, suspensions) on
+        each wagon's wheels (`railtrack.timedomain.ring_vehicle`), the train
+        being ``vehicle.train(H, v)``.  Default: constant moving forces.
     profile : callable, optional
         Rail-top profile r(x) [m] fixed on the ring (`railtrack.model.profile`),
         which the wheels roll on; it must repeat with the ring's length
@@ -310,7 +314,7 @@ def simulate_time_domain(
         shown = show_progress(progress, cost.seconds(min(TYPICAL_PERIODS, max_periods))
                               > LONG_RUN_SECONDS)
         check_steps_per_period(passage, steps_per_period)
-        check_wheel_arguments(wheel, profile, start)
+        check_wheel_arguments(wheel, profile, start, train)
         cell = None
         if isinstance(foundation, SleeperCell):
             n_ring = sleepers_on_ring(passage)
@@ -350,7 +354,8 @@ def simulate_time_domain(
         stepper = NewmarkStepper(mesh, law, reference, dt, loads, newton_abs, max_newton_iterations,
                                  weight, hht_alpha)
         if wheel is not None:
-            u, stepper = attach_wheels(stepper, wheel, profile, u, times, reference[0], wagons)
+            attach = attach_vehicle if isinstance(wheel, Vehicle) else attach_wheels
+            u, stepper = attach(stepper, wheel, profile, u, times, reference[0], wagons)
         (stepper if wheel is None else stepper.stepper).start(u, v)
         every_sleeper = cell is not None and not cell.uniform
         recorder = SleeperRecorder(mesh, n_steps)

@@ -82,8 +82,8 @@ class TimeDomainSolution(ShortRepr, Exports):
         displacement z and the rail's displacement u_c under it [m], positive
         upward, over the last period; None for constant moving forces.
         `loss_of_contact` gives when P = 0.
-    wheel : Wheel or None
-        The wheel of the run.
+    wheel : Wheel, Vehicle or None
+        The wheel (or vehicle above the wheels) of the run.
 
     A `SleeperCell` run keeps the cell in `foundation`; ring sleeper i is its
     sleeper i mod N.  `contact_fraction` gives each sleeper's share of the

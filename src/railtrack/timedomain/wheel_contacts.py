@@ -26,8 +26,10 @@ def solve_contacts(system, rhs, contacts, wheel, offset, gain, remainder, guess,
     wheel : Wheel
     offset : ndarray, shape (J,)
         r(x_c) - (h_w - Q) / a_w [m]: with it delta = u_c - P / a_w + offset.
-    gain : float
-        a_w [N/m] (k_p in a static solve).
+    gain : float or ndarray, shape (J, J)
+        a_w [N/m] (k_p in a static solve); or the wheels' compliance G [m/N]
+        when they are coupled (a vehicle, `railtrack.timedomain.ring_vehicle`):
+        the wheels then move by G P where a lone wheel moves by P / a_w.
     remainder : callable
         w -> (g, dg/dw) of the sleepers' laws beyond the factored reference [N, N/m].
     guess : (g, P)
@@ -63,7 +65,8 @@ def solve_contacts(system, rhs, contacts, wheel, offset, gain, remainder, guess,
     influence[:n_s, :n_s] = system.influence
     influence[:n_s, n_s:] = contact[sleepers]
     influence[n_s:, :n_s] = at_contacts(system.response)
-    influence[n_s:, n_s:] = at_contacts(contact) + np.eye(count) / gain
+    own = np.eye(count) / gain if np.ndim(gain) == 0 else np.asarray(gain, dtype=float)
+    influence[n_s:, n_s:] = at_contacts(contact) + own
     if compliance is not None:
         influence[n_s:, n_s:] += np.diag(compliance)
     target = np.concatenate([free[sleepers], at_contacts(free) + offset])
