@@ -156,3 +156,34 @@ def test_a_linear_law_on_a_layered_soil_is_eq_23_with_the_soil_in_series():
     rigid = -system.load / (system.operator + law.stiffness / float(passage.sleeper_mass)
                             + 1j * omega * law.damping / float(passage.sleeper_mass))
     assert np.max(np.abs(got - rigid)) > 1e-2 * np.max(np.abs(truth))   # the soil matters
+
+
+SOILS = [Ground((SoilLayer(80.0, 0.3, 1800.0, 0.05, thickness=3.0),),
+                SoilLayer(250.0, 0.3, 2000.0, 0.03)),
+         Ground((SoilLayer(250.0, 0.3, 2000.0, 0.03, thickness=0.5),               # stiff crust
+                 SoilLayer(60.0, 0.4, 1600.0, 0.03, thickness=4.0)),
+                SoilLayer(300.0, 0.3, 2000.0, 0.03))]
+
+
+@pytest.mark.parametrize("soil", SOILS)
+@pytest.mark.parametrize("omega", [0.0, 40.0, 400.0, 1500.0])
+def test_the_short_waves_interpolated_agree_with_the_strip_integrated_at_every_wavenumber(
+        soil, omega):
+    # the lattice sum's 129 wavenumbers of one harmonic: LayeredGround integrates |k_x| < K
+    # and interpolates beyond; strip_flexibility integrates each of them
+    kx = (0.37 + 2 * np.pi * np.arange(-64, 65)) / 0.6
+    ours = LayeredGround(soil, 2.5, A).compliance(kx, omega)
+    exact = rt.equations.ground_strip.strip_flexibility(soil, kx, omega, 2.5, average=True)
+    assert np.max(np.abs(ours / exact - 1)) < 1e-8
+
+
+def test_an_interpolant_that_fails_its_check_gives_way_to_the_integral(monkeypatch):
+    import railtrack.equations.ground_layered as layered
+    kx = (0.37 + 2 * np.pi * np.arange(-64, 65)) / 0.6
+    ground = LayeredGround(SOILS[0], 2.5, A)
+    interpolated = ground.compliance(kx, 400.0)
+    monkeypatch.setattr(layered, "_CHECK", 0.0)          # no interpolant passes
+    integrated = ground.compliance(kx, 400.0)
+    exact = rt.equations.ground_strip.strip_flexibility(SOILS[0], kx, 400.0, 2.5, average=True)
+    assert np.max(np.abs(integrated / exact - 1)) < 1e-13
+    assert 0 < np.max(np.abs(interpolated / exact - 1)) < 1e-8

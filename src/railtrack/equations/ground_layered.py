@@ -39,9 +39,12 @@ import numpy as np
 
 from ..model.ground import Ground
 from ..model.validation import require_positive
-from .ground_strip import strip_flexibility
+from .ground_strip import static_strip_flexibility, strip_flexibility
 
 __all__ = ["LayeredGround"]
+
+_NODES = 12                       # Chebyshev points in u = K / |k_x| for the short waves
+_CHECK = 1e-7                     # the interpolant's largest error at the check point, of C
 
 
 @dataclass(frozen=True)
@@ -105,6 +108,46 @@ class LayeredGround:
         values = np.zeros(kx.shape, dtype=complex)
         dynamic = (kx != 0) | (omega != 0)      # C(0, 0) = 0: the mean from the mean level
         if np.any(dynamic):
-            values[dynamic] = strip_flexibility(self.ground, kx[dynamic], omega, self.width,
-                                                self.average)
+            # C is even in k_x: each |k_x| once
+            wanted, back = np.unique(np.abs(kx[dynamic]), return_inverse=True)
+            values[dynamic] = self._even(wanted, omega)[back]
         return values
+
+    def _flexibility(self, kx, omega):
+        return strip_flexibility(self.ground, kx, omega, self.width, self.average)
+
+    def _even(self, kx: np.ndarray, omega: float) -> np.ndarray:
+        """C at sorted |k_x| >= 0: exact below K, interpolated beyond (the module's note)."""
+        layers = self.ground.layers
+        reach = max(2.0 * omega / (0.8 * self.ground.slowest_shear_wave_speed),
+                    2.0 * np.pi / self.width, 8.0 / layers[0].thickness if layers else 0.0)
+        far = kx > reach
+        if np.count_nonzero(far) <= _NODES + 1:
+            return self._flexibility(kx, omega)
+        u_end = reach / kx[-1]
+        nodes = self._nodes(u_end, _NODES)
+        check = 0.5 * (nodes[_NODES // 2] + nodes[_NODES // 2 + 1])
+        near_values = self._flexibility(np.concatenate([kx[~far], reach / nodes,
+                                                        [reach / check]]), omega)
+        exact_near, at_nodes, at_check = np.split(near_values,
+                                                  [np.count_nonzero(~far), -1])
+        def rest(k, value):
+            return (value - self._static(k, omega)) * k**3
+        fit = np.polynomial.chebyshev.Chebyshev.fit(
+            nodes, rest(reach / nodes, at_nodes), _NODES - 1, domain=[u_end, 1.0])
+        guess = fit(check) / (reach / check) ** 3 + self._static(reach / check, omega)
+        if abs(guess - at_check[0]) > _CHECK * abs(at_check[0]):
+            return self._flexibility(kx, omega)
+        out = np.empty(kx.size, dtype=complex)
+        out[~far] = exact_near
+        out[far] = fit(reach / kx[far]) / kx[far] ** 3 + self._static(kx[far], omega)
+        return out
+
+    @staticmethod
+    def _nodes(start: float, count: int) -> np.ndarray:
+        """Chebyshev points of the first kind on [start, 1]."""
+        x = np.cos(np.pi * (np.arange(count) + 0.5) / count)
+        return start + (1.0 - start) * (x + 1.0) / 2.0
+
+    def _static(self, kx, omega):
+        return static_strip_flexibility(self.ground, kx, omega, self.width, self.average)
