@@ -50,6 +50,7 @@ from scipy.special import iti0k0, k1, sici
 from ..model.ground import Ground
 from ..model.validation import require_finite, require_positive
 from .ground_stiffness import surface_flexibility
+from .ground_table import radial_flexibility
 
 __all__ = ["strip_flexibility", "strip_stiffness", "static_strip_flexibility"]
 
@@ -92,8 +93,11 @@ def _breakpoints(ground: Ground, kx: float, omega: float, width: float,
     points = np.unique(np.clip(points, 0.0, end))
     caps = np.where(points[:-1] < near, cap_near if near else cap, cap)
     pieces = np.maximum(np.ceil(np.diff(points) / caps), 1).astype(int)
-    return np.concatenate([np.linspace(a, b, n, endpoint=False)
-                           for a, b, n in zip(points[:-1], points[1:], pieces)] + [[end]])
+    # each interval cut into its pieces of equal width (np.linspace per interval, vectorised)
+    panel = np.repeat(np.arange(pieces.size), pieces)
+    step = np.arange(panel.size) - np.repeat(np.cumsum(pieces) - pieces, pieces)
+    edges = points[panel] + np.diff(points)[panel] * step / pieces[panel]
+    return np.append(edges, end)
 
 
 def _sine_tail(x, kxa, c):
@@ -179,7 +183,10 @@ def strip_flexibility(ground: Ground, kx, omega, width: float,
     static = (1.0 - top.poisson_ratio) / (top.shear_modulus * top.damping_factor(omega))
     split = kx > 0
     k = np.hypot(kx[owner], ky)
-    flexibility = surface_flexibility(ground, k, omega[owner])
+    if np.all(omega == omega[0]):           # one frequency: F(k) from one table for all nodes
+        flexibility = radial_flexibility(ground, k, float(omega[0]))
+    else:
+        flexibility = surface_flexibility(ground, k, omega[owner])
     flexibility = flexibility - np.where(split[owner], static[owner] / k, 0.0)
     values = flexibility * shape * weight
     total = np.bincount(owner, values.real, kx.size) + 1j * np.bincount(owner, values.imag,
