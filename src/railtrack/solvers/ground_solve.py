@@ -46,7 +46,9 @@ __all__ = ["solve_on_ground"]
 
 class _Remembered:
     """The ground with its compliance remembered per (omega, kx): when "auto" grows m, the
-    spectrum of eq. (G2) is evaluated again, and only the new harmonics cost a lattice sum."""
+    spectrum of eq. (G2) is evaluated again, and only the new harmonics cost a lattice sum;
+    and a later solve on the same ground at the same speed (another law, load or m) costs
+    no lattice sum at all (`_remembered`)."""
 
     def __init__(self, ground):
         self.footprint, self._ground, self._memo = ground.footprint, ground, {}
@@ -55,8 +57,27 @@ class _Remembered:
         kx = np.asarray(kx, dtype=float)
         key = (float(omega), kx.shape, kx.tobytes())
         if key not in self._memo:
+            if len(self._memo) >= _MEMO_SIZE:        # a long sweep of speeds: start again
+                self._memo.clear()
             self._memo[key] = self._ground.compliance(kx, omega)
         return self._memo[key]
+
+
+_MEMO_SIZE = 20000            # compliance arrays (~2 kB each) remembered per ground
+_GROUNDS: dict = {}           # the last few grounds solved on, by value
+
+
+def _remembered(ground) -> _Remembered:
+    """The ground's memo, kept across solves for a frozen (hashable) ground, the last four."""
+    try:
+        hash(ground)
+    except TypeError:                                  # a mutable ground: this solve only
+        return _Remembered(ground)
+    if ground not in _GROUNDS:
+        if len(_GROUNDS) >= 4:
+            del _GROUNDS[next(iter(_GROUNDS))]
+        _GROUNDS[ground] = _Remembered(ground)
+    return _GROUNDS[ground]
 
 
 def _refuse(ground_options: dict) -> None:
@@ -110,7 +131,7 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
     check_laws_at_rest([foundation], [float(passage.pad_stiffness)],
                        [float(passage.pad_damping)], check_foundation)
 
-    remembered = _Remembered(ground)
+    remembered = _remembered(ground)
     m, target, spectrum, system, initial = first_system(
         passage, foundation, harmonics, automatic, method, accuracy, samples, initial, remembered)
     iterations = 0
