@@ -3,6 +3,8 @@ ground, the Winkler limit (a spring in series with the law), a per-harmonic clos
 the linear track with the ground in series, and the sleeper's own equation (17) with the
 ground's motion summed over sleepers in space."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -202,3 +204,38 @@ def test_truncation_errors_on_a_ground_against_a_solve_at_eight_times_m():
     actual = np.max(np.abs(whole - s.sleeper_displacement(t))) / np.max(np.abs(whole))
     estimate = s.truncation_errors()["sleeper_displacement"]
     assert abs(estimate / actual - 1) < 0.005
+
+
+class _CountedLayer(SmearedLayer):
+    """A smeared layer that counts its compliance calls; hashable by value like a frozen ground."""
+
+    calls = 0
+
+    def compliance(self, kx, omega):
+        type(self).calls += 1
+        return super().compliance(kx, omega)
+
+    def __hash__(self):
+        return hash((self.s0, self.s2, self.rho, self.eta, self.footprint))
+
+    def __eq__(self, other):
+        return type(other) is type(self) and hash(other) == hash(self)
+
+
+@pytest.mark.filterwarnings("ignore::railtrack.TruncationWarning")
+def test_a_second_solve_on_the_same_ground_and_speed_costs_no_lattice_sum():
+    track, train = rt.Track.paper(), rt.Train.paper()
+    first = rt.solve(track, train, rt.CubicFoundation.paper(0.8), harmonics=6,
+                     ground=_CountedLayer())
+    calls = _CountedLayer.calls
+    assert calls > 0
+    again = rt.solve(track, train, rt.CubicFoundation.paper(0.5), harmonics=6,
+                     ground=_CountedLayer())                # equal by value: the same memo
+    assert _CountedLayer.calls == calls
+    fresh = rt.solve(track, train, rt.CubicFoundation.paper(0.5), harmonics=6,
+                     ground=SmearedLayer())                 # equal only to itself: a new memo
+    assert np.allclose(again.coefficients, fresh.coefficients, rtol=1e-12, atol=0)
+    assert not np.allclose(first.coefficients, again.coefficients, rtol=1e-3, atol=0)
+    rt.solve(track, dataclasses.replace(train, speed=30.0), rt.CubicFoundation.paper(0.5),
+             harmonics=6, ground=_CountedLayer())
+    assert _CountedLayer.calls > calls                       # another speed: new lattice sums
