@@ -2,7 +2,7 @@
 
 Run with ``make bench`` (all sections), or ``python benchmarks/bench.py
 stability`` for some of them (``targets``, ``solvers``, ``sweep``, ``stability``,
-``cells``, ``wheels``).  ``targets`` (benchmarks/targets.py) is issue 28's table:
+``cells``, ``wheels``, ``ground``).  ``targets`` (benchmarks/targets.py) is issue 28's table:
 each target timed beside its reference in one run.
 Prints Markdown tables: the machine, the median wall time of each solve
 (median over several runs, each run timing a batch of repeated solves), and
@@ -27,6 +27,7 @@ import scipy
 
 import railtrack as rt
 from targets import print_targets   # benchmarks/targets.py, beside this file
+from bench_ground import bench_ground
 
 HARMONICS = 15
 CASES = {
@@ -292,7 +293,7 @@ def _timed(function) -> float:
 
 SECTIONS = {"targets": print_targets, "solvers": main, "sweep": bench_sweep,
             "stability": bench_stability,
-            "cells": bench_cells, "wheels": bench_wheels}
+            "cells": bench_cells, "wheels": bench_wheels, "ground": bench_ground}
 
 
 if __name__ == "__main__":

@@ -51,7 +51,9 @@ def _by_quad(ground, kx, omega, average, split=20.0):
 
 @pytest.mark.parametrize("ground, kx, omega, average", [
     (HALF, 0.5, 0.0, False), (HALF, 0.2, 60.0, True), (CLAY, 0.3, 60.0, False),
-    (CLAY, 1.5, 150.0, True), (CLAY, 5.0, 30.0, False), (HALF, 0.01, 100.0, False)])
+    (CLAY, 1.5, 150.0, True), (CLAY, 5.0, 30.0, False), (HALF, 0.01, 100.0, False),
+    # short waves, where the top stratum's static 1/k is split off and integrated in closed form
+    (CLAY, 300.0, 400.0, True), (HALF, 150.0, 0.0, True), (CLAY, 60.0, 900.0, False)])
 def test_the_strip_integral_agrees_with_adaptive_quadrature(ground, kx, omega, average):
     ours = strip_flexibility(ground, kx, omega, WIDTH, average)
     assert abs(ours / _by_quad(ground, kx, omega, average) - 1) < 2e-6

@@ -58,6 +58,8 @@ from .timedomain.monodromy import RingMultipliers, ring_multipliers
 from .timedomain.timestep import TimeStepWarning, estimate_step_error
 from .equations.load import axle_factor, load_coefficients
 from .model.passage import Passage
+from .model.ground_protocol import WinklerGround
+from .solvers.ground_solution import GroundSolution
 from .model.cell import SleeperCell
 from .model.gap import GapFoundation
 from .solvers.cell_solution import CellSolution
@@ -93,6 +95,8 @@ __all__ = [
     "Track",
     "Train",
     "Passage",
+    "WinklerGround",
+    "GroundSolution",
     "LinearFoundation",
     "BilinearFoundation",
     "CubicFoundation",

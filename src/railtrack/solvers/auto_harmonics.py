@@ -40,7 +40,7 @@ Newton on a kinked law with long lifted stretches needs far fewer steps from the
 
 
 def first_system(passage: Passage, foundation, harmonics, automatic: bool, method: str,
-                 accuracy: float, samples, initial):
+                 accuracy: float, samples, initial, ground=None):
     """The system of the first solve, as (m, target m, spectrum, system, initial).
 
     For "auto" the predicted m (or a quarter of it, see `WARM_START_ABOVE`);
@@ -49,7 +49,7 @@ def first_system(passage: Passage, foundation, harmonics, automatic: bool, metho
     truncation estimate.
     """
     if automatic:
-        target, spectrum = predict_harmonics(passage, foundation, accuracy / 2)
+        target, spectrum = predict_harmonics(passage, foundation, accuracy / 2, ground)
         coarse = method == "analytic" or target <= WARM_START_ABOVE
         m = target if coarse else max(15, target // 4)
         system = spectrum.system(passage, foundation, m, auto_samples(m))
@@ -57,13 +57,13 @@ def first_system(passage: Passage, foundation, harmonics, automatic: bool, metho
     m = int(harmonics)
     if samples is not None:
         require_jacobian_samples(samples, m)
-    spectrum = track_spectrum(passage, TAIL_FACTOR * m)
+    spectrum = track_spectrum(passage, TAIL_FACTOR * m, ground)
     system = spectrum.system(passage, foundation, m, samples)
     return m, m, spectrum, system, None if initial is None else checked_initial(initial, m)
 
 
 def next_system(passage: Passage, foundation, method: str, m: int, target: int, estimate: float,
-                accuracy: float, coefficients, tail, spectrum):
+                accuracy: float, coefficients, tail, spectrum, ground=None):
     """The next round of "auto": None when m is done, else (m, spectrum, system, initial).
 
     m is done once it has reached the target and meets the accuracy (or is
@@ -80,7 +80,7 @@ def next_system(passage: Passage, foundation, method: str, m: int, target: int, 
         grown = min(MAX_AUTO_HARMONICS, max(
             math.ceil(1.1 * m), grown_harmonics(coefficients, tail, 0.8 * accuracy)))
     if spectrum.upto < TAIL_FACTOR * grown:
-        spectrum = track_spectrum(passage, TAIL_FACTOR * grown)
+        spectrum = track_spectrum(passage, TAIL_FACTOR * grown, ground)
     initial = padded(coefficients, tail, grown) if method != "analytic" else None
     system = spectrum.system(passage, foundation, grown, auto_samples(grown))
     return grown, spectrum, system, initial

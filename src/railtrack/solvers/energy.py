@@ -33,16 +33,21 @@ class Dissipation:
     pad : float
         By the rail pad, ``int R_pad (w - w_r)' dt``.
     foundation : float
-        By the foundation, ``int f(w, w') w' dt``.
+        By the foundation, ``int f(w, w') w' dt``; on a ground ``int f(d, d') d' dt``.
+    ground : float
+        Taken in by the ground, ``int f u' dt``, u its displacement under the
+        sleeper (`railtrack.GroundSolution`; it radiates or dissipates it); 0 on
+        a rigid ground.
     """
 
     pad: float
     foundation: float
+    ground: float = 0.0
 
     @property
     def total(self) -> float:
-        """pad + foundation [J]."""
-        return self.pad + self.foundation
+        """pad + foundation + ground [J]."""
+        return self.pad + self.foundation + self.ground
 
     @property
     def pad_share(self) -> float:
@@ -88,12 +93,17 @@ def dissipation(solution, samples: int | None = None) -> Dissipation:
     sleeper = solution.coefficients
     pad = sleeper - solution.rail_coefficients()  # compression of the pad [m]
     pad_rate = fourier_series(1j * omega * pad, omega, t)
-    rate = solution.sleeper_velocity(t)
-    force = np.asarray(solution.foundation.force(solution.sleeper_displacement(t), rate), float)
+    # on a ground the law sees d = w - u, and the ground takes f u'
+    relative = getattr(solution, "relative_coefficients", None)
+    relative = sleeper if relative is None else relative
+    rate = fourier_series(1j * omega * relative, omega, t)
+    force = np.asarray(solution.foundation.force(fourier_series(relative, omega, t), rate), float)
+    ground_rate = fourier_series(1j * omega * (sleeper - relative), omega, t)
     period = solution.period
     return Dissipation(
         pad=float(np.mean(solution.rail_seat_load(t) * pad_rate) * period),
         foundation=float(np.mean(force * rate) * period),
+        ground=float(np.mean(force * ground_rate) * period),
     )
 
 

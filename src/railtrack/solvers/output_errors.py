@@ -16,7 +16,8 @@ each output through its own linear relation: eq. (6) for the rail, eq. (5)
 `railtrack.equations.rail_field` less the kinks summed in closed form
 (`railtrack.equations.moment`) for the moment.  Each error is the largest
 value over the period of the neglected part, over the peak of the output
-with that part added.
+with that part added.  On a ground (`railtrack.GroundSolution`) the tail
+is that of eq. (G2)'s relative displacement d, moved to w = d + u.
 """
 
 from __future__ import annotations
@@ -69,11 +70,17 @@ def output_truncation_errors(solution, x: float = 0.0) -> dict[str, float]:
         return dict.fromkeys(OUTPUTS, float("nan"))
     passage, m = solution.passage, solution.harmonics
     upto = TAIL_FACTOR * m
-    spectrum = track_spectrum(passage, upto)
+    ground = getattr(solution, "ground", None)
+    spectrum = track_spectrum(passage, upto, ground)
     system = spectrum.system(passage, solution.foundation, m, solution.samples)
     kept = np.asarray(solution.coefficients[m:], dtype=complex)          # c_0..c_m
+    # on a ground the law sees d (eq. G2); w = d + u, u = -R_g M (op' d + F') beyond m
+    relative = kept if ground is None else solution.relative_coefficients[m:]
     with np.errstate(over="ignore", invalid="ignore"):
-        tail = tail_coefficients(system, kept, spectrum)[: upto - m]
+        tail = tail_coefficients(system, relative, spectrum)[: upto - m]
+    if ground is not None:
+        tail = tail - (spectrum.receptance[m + 1:] * float(passage.sleeper_mass)
+                       * (spectrum.operator[m + 1:] * tail + spectrum.load[m + 1:]))
     sleeper = np.concatenate([kept, tail])                                # c_0..c_8m
     omega = spectrum.omega
     samples = _grid(upto)

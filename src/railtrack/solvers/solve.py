@@ -45,6 +45,7 @@ from .fixed_point import SolverOutcome, iterate_fixed_point
 from .methods import check_method_arguments, run_method
 from .newton import iterate_newton
 from .cell_auto import solve_track_cell
+from .ground_solve import solve_on_ground
 from .wheel_auto import solve_track_wheels
 from .conditioning import check_conditioning
 from .solution import ConvergenceWarning, Solution
@@ -109,6 +110,7 @@ def solve(
     stability: str = "quick",
     wheel=None,
     profile=None,
+    ground=None,
 ) -> Solution:
     """Periodic response of a sleeper on a (nonlinear) foundation, eqs. (12)–(23).
 
@@ -190,6 +192,10 @@ def solve(
         `railtrack.CosineDip` for a dipped weld); it must repeat with the
         cell of sleepers.  A `period` of n > 1 wagon lengths makes the steady
         state n wagons long: the result's passage is ``train.tiled(n)``.
+    ground : GroundCompliance, optional
+        The law between each sleeper and this ground, which couples them all
+        (`railtrack.model.ground_protocol`); a `GroundSolution`
+        (`railtrack.solvers.ground_solve`).
     stability : {"quick", "full", "off"}
         After a converged solve of a nonlinear law, look at its Floquet
         multipliers (`railtrack.solvers.stability_hint`): "quick" warns
@@ -225,6 +231,13 @@ def solve(
     """
     with blas_threads(1):
         stability = checked_stability(stability)
+        if ground is not None:
+            return solve_on_ground(
+                track, train, foundation, ground, harmonics, method, methods=METHODS,
+                accuracy=accuracy, tol=tol, max_iterations=max_iterations, split=split,
+                samples=samples, initial=initial, strict=strict, check_foundation=check_foundation,
+                fallback=fallback, stability=stability, wheel=wheel, profile=profile,
+                cell=isinstance(foundation, SleeperCell))
         if wheel is not None:
             return solve_track_wheels(track, train, foundation, wheel, profile, harmonics, method,
                                       accuracy=accuracy, tol=tol, max_iterations=max_iterations,

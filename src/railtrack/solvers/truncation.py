@@ -40,6 +40,7 @@ from ..equations.harmonic_balance import HarmonicSystem, NonFiniteForceError, de
 from ..equations.sleeper import coupling_and_transfer, sleeper_operator
 from ..model.passage import Passage
 from ..equations.load import load_coefficients
+from ..equations.ground_balance import on_ground
 
 __all__ = [
     "TrackSpectrum",
@@ -82,6 +83,8 @@ class TrackSpectrum:
     coupling: np.ndarray
     load: np.ndarray
     operator: np.ndarray
+    receptance: np.ndarray | None = None
+    """R_g,n [m/N] on a ground (eq. G1), None on a rigid one."""
 
     @property
     def upto(self) -> int:
@@ -99,14 +102,20 @@ class TrackSpectrum:
         )
 
 
-def track_spectrum(passage: Passage, upto: int) -> TrackSpectrum:
-    """The linear coefficients of eq. (17) (eqs. 3, 8, 16) for n = 0..upto."""
+def track_spectrum(passage: Passage, upto: int, ground=None) -> TrackSpectrum:
+    """The linear coefficients of eq. (17) (eqs. 3, 8, 16) for n = 0..upto.
+
+    On a `ground`, those of eq. (G2) for the relative displacement d
+    (`railtrack.equations.ground_balance.on_ground`), once per spectrum.
+    """
     omega = passage.fundamental_frequency * np.arange(upto + 1)
     coupling, transfer = coupling_and_transfer(passage, omega)
-    return TrackSpectrum(
-        omega, coupling, load_coefficients(passage, omega, transfer),
-        sleeper_operator(passage, omega) - coupling,
-    )
+    load = load_coefficients(passage, omega, transfer)
+    operator = sleeper_operator(passage, omega) - coupling
+    # a HarmonicSystem takes m <= upto / TAIL_FACTOR; the rest is the estimate's
+    operator, load, receptance = on_ground(passage, omega, operator, load, ground,
+                                           upto // TAIL_FACTOR)
+    return TrackSpectrum(omega, coupling, load, operator, receptance)
 
 
 def _linearised_response(spectrum: TrackSpectrum, excess: np.ndarray, stiffness: float,
@@ -192,7 +201,8 @@ def _error_and_tail(system: HarmonicSystem, coefficients: np.ndarray,
     return (error / peak if peak > 0 else float("inf")), tail
 
 
-def predict_harmonics(passage: Passage, foundation, accuracy: float) -> tuple[int, TrackSpectrum]:
+def predict_harmonics(passage: Passage, foundation, accuracy: float,
+                      ground=None) -> tuple[int, TrackSpectrum]:
     """Smallest m whose neglected harmonics, predicted before solving, are below `accuracy`.
 
     The prediction is eq. (23) with the law linearised about its static
@@ -205,6 +215,8 @@ def predict_harmonics(passage: Passage, foundation, accuracy: float) -> tuple[in
     foundation : Foundation
     accuracy : float
         Target relative error [-], 0 < accuracy < 1.
+    ground : GroundCompliance, optional
+        Predict the relative displacement d on this ground (eq. G2).
 
     Returns
     -------
@@ -224,7 +236,7 @@ def predict_harmonics(passage: Passage, foundation, accuracy: float) -> tuple[in
     # evaluation of eq. (3) when the solve asks for a larger m
     upto = TAIL_FACTOR * max(8, int(np.ceil(1.25 * passage.wagon_length / passage.sleeper_spacing)))
     while True:
-        spectrum = track_spectrum(passage, upto)
+        spectrum = track_spectrum(passage, upto, ground)
         response = _linearised_response(spectrum, 0.0, stiffness, damping, mass)
         if np.isfinite(mean):
             response[0] = mean
