@@ -382,7 +382,7 @@ ANSWERS = {
         ("critical speed estimated by the smeared formula", r"estimated v_cr = ([\d.]+) m/s",
          "m/s", 0.05),
     ],
-    "16.1": [
+    "17.1": [
         ("paper's track: steps to 0.1 %",
          r"paper's track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0),
         ("ballasted track: rho_0", r"ballasted track: rho_0 = ([\d.]+)", "rho_0", 0.0005),
@@ -393,14 +393,14 @@ ANSWERS = {
          r"ballasted track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0,
          r"ballast"),
     ],
-    "16.2": [
+    "17.2": [
         ("peak rail-seat load with eta1 doubled, 45 m/s",
          r"45 m/s, eta1 = 2 MN s/m: seat ([\d.]+) Q", "Q", 0.0005),
         ("deepest sleeper with eta1 doubled, 45 m/s",
          r"45 m/s, eta1 = 2 MN s/m: seat [\d.]+ Q, sleeper ([\d.]+) mm", "mm", 0.0005,
          r"2 MN|2000|doubl|twice"),
     ],
-    "16.3": [
+    "17.3": [
         # the sweep's grid is 0.5 m/s
         # (a peak speed counts where its sentence names the pad it is for:
         # chapter 10's 356 m/s is the smeared speed of the pad of Table 1)
@@ -418,7 +418,7 @@ ANSWERS = {
          r"smeared"),
         ("the peak's shift", r"peak moved by ([\d.]+) %", "%", 0.05),
     ],
-    "16.4": [
+    "17.4": [
         ("critical speed of the rigid-pad beam", r"v_inf = ([\d.]+) m/s", "m/s", 0.05,
          r"critical|rigid|v_\\?inf|infty|peak"),
         ("peak with a pad 100 times stiffer", r"peak of eq\. \(23\), k1 = 22000 MN/m: (\d+) m/s",
