@@ -383,6 +383,36 @@ ANSWERS = {
          "m/s", 0.05),
     ],
     "16.1": [
+        ("(a): Viktorov's c_R/c_s at nu = 0.49", r"nu = 0\.49: Viktorov c_R/c_s = ([\d.]+)",
+         "bare", 0.00005, r"Viktorov|approximat"),
+        ("(b): Viktorov's error at nu = 0.25", r"nu = 0\.25: Viktorov .*error ([-\d.]+) %", "%",
+         0.005, r"Viktorov|approximat"),
+        ("(b): Viktorov's error at nu = 0.49", r"nu = 0\.49: Viktorov .*error ([-\d.]+) %", "%",
+         0.005, r"Viktorov|approximat"),
+    ],
+    "16.2": [
+        ("critical speed on a 1.5 m strip", r"b = 1\.5 m: v_cr = ([\d.]+) m/s", "m/s", 0.005,
+         r"1\.5 m|b = 1\.5|halv|width"),
+        ("critical speed on a 6 m strip", r"b = 6\.0 m: v_cr = ([\d.]+) m/s", "m/s", 0.005,
+         r"6 m|6\.0 m|b = 6|doubl|width"),
+    ],
+    "16.3": [
+        ("(a): displacement at 49 m/s with 1.5 % damping",
+         r"49 m/s: ([\d.]+) mm with 1\.5 %", "mm", 0.0005, r"1\.5 %|halv|damping"),
+        ("(a): its ratio to 3 %", r"49 m/s: .*ratio ([\d.]+)", "bare", 0.0005,
+         r"1\.5 %|halv|damping"),
+        ("(a): displacement at 63 m/s with 1.5 % damping",
+         r"63 m/s: ([\d.]+) mm with 1\.5 %", "mm", 0.0005, r"1\.5 %|halv|damping"),
+    ],
+    "16.4": [
+        ("(b): critical speed of the heavier track", r"m = 2620 kg/m: v_cr = ([\d.]+) m/s",
+         "m/s", 0.005, r"2620|heav|embankment|mass"),
+        ("(b): Mezher's estimate for it", r"m = 2620 kg/m: .*estimate ([\d.]+) m/s", "m/s",
+         0.005, r"2620|heav|embankment|mass"),
+        ("(b): the crossing's frequency", r"m = 2620 kg/m: .*at ([\d.]+) Hz", "Hz", 0.005,
+         r"2620|heav|embankment|mass|cross"),
+    ],
+    "17.1": [
         ("paper's track: steps to 0.1 %",
          r"paper's track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0),
         ("ballasted track: rho_0", r"ballasted track: rho_0 = ([\d.]+)", "rho_0", 0.0005),
@@ -393,14 +423,14 @@ ANSWERS = {
          r"ballasted track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0,
          r"ballast"),
     ],
-    "16.2": [
+    "17.2": [
         ("peak rail-seat load with eta1 doubled, 45 m/s",
          r"45 m/s, eta1 = 2 MN s/m: seat ([\d.]+) Q", "Q", 0.0005),
         ("deepest sleeper with eta1 doubled, 45 m/s",
          r"45 m/s, eta1 = 2 MN s/m: seat [\d.]+ Q, sleeper ([\d.]+) mm", "mm", 0.0005,
          r"2 MN|2000|doubl|twice"),
     ],
-    "16.3": [
+    "17.3": [
         # the sweep's grid is 0.5 m/s
         # (a peak speed counts where its sentence names the pad it is for:
         # chapter 10's 356 m/s is the smeared speed of the pad of Table 1)
@@ -418,7 +448,7 @@ ANSWERS = {
          r"smeared"),
         ("the peak's shift", r"peak moved by ([\d.]+) %", "%", 0.05),
     ],
-    "16.4": [
+    "17.4": [
         ("critical speed of the rigid-pad beam", r"v_inf = ([\d.]+) m/s", "m/s", 0.05,
          r"critical|rigid|v_\\?inf|infty|peak"),
         ("peak with a pad 100 times stiffer", r"peak of eq\. \(23\), k1 = 22000 MN/m: (\d+) m/s",

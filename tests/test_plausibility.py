@@ -228,7 +228,7 @@ def test_the_books_parameter_sets_are_plausible():
 @pytest.mark.parametrize("limit", [
     lambda: rt.Wheel(1e-3),                                # chapter 14's 1 g wheel
     lambda: rt.Wheel(600.0, hertz_constant=9.4e15),        # chapter 14's C_H x 1e5
-    lambda: rt.Track.paper(pad_stiffness=100 * 220e6),     # chapter 16's rigid pad
+    lambda: rt.Track.paper(pad_stiffness=100 * 220e6),     # chapter 17's rigid pad
 ])
 def test_the_books_limit_studies_warn_and_can_be_silenced(limit):
     # Deliberately far outside real track: they warn, and plausibility("ignore")

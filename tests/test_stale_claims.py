@@ -147,12 +147,6 @@ UNCITED = {
                 "it cites, as the bibliography page says",
     "sheng2005": "the paper's reference [17], listed among the works "
                  "it cites, as the bibliography page says",
-    "kausel1981": "the method of the library's layered ground "
-                  "(equations/ground_stiffness.py), whose chapter, issue 31, "
-                  "is not written yet; the bibliography page lists the "
-                  "library's methods",
-    "dieterman1996": "the strip stiffness of the library's layered ground "
-                     "(equations/ground_strip.py), as kausel1981",
 }
 # listed, cited nowhere and no reason: expected to fail until cited or dropped
 KNOWN_UNCITED: dict[str, str] = {}  # key: why it is still uncited (none today)

@@ -89,9 +89,23 @@ def _speed_limit(ground: Ground):
     def phase(v, k):
         return np.interp(np.log(k * v / (2 * np.pi)), np.log(freqs), speeds)
 
+    def exact(v, k):
+        return v - fundamental_phase_speed(ground, k * v / (2 * np.pi), points=200)[0]
+
+    def refine(k):
+        # the interpolated curve is off by up to ~0.5 % where c_1 falls steeply, and a root
+        # of D found above the true c_1 is no root (K_eq there crosses a pole): the speed is
+        # refined on the mode itself, v - c_1(k v / 2 pi) rising through zero
+        guess = brentq(lambda v: v - phase(v, k), 1e-9, speeds.max(), xtol=1e-9)
+        lo, hi = 0.98 * guess, min(1.02 * guess, top)
+        if exact(lo, k) >= 0 or exact(hi, k) <= 0:
+            lo, hi = 0.5 * ground.slowest_shear_wave_speed, top
+        return brentq(exact, lo, hi, args=(k,), xtol=1e-10 * guess, rtol=1e-12)
+
+    top = ground.halfspace.shear_wave_speed * (1.0 - 1e-9)
+
     def limit(k):
-        return np.array([brentq(lambda v, kk=kk: v - phase(v, kk), 1e-9, speeds.max(),
-                                xtol=1e-9) for kk in np.atleast_1d(k)]).reshape(np.shape(k))
+        return np.array([refine(kk) for kk in np.atleast_1d(k)]).reshape(np.shape(k))
     return limit
 
 
@@ -110,7 +124,9 @@ def _branch_speed(ground, ei, m, b, k, pad, limit, rtol=1e-6) -> np.ndarray:
 
     # v = top (1 - s^2): K_eq falls like sqrt(1 - v / c_R) near a Rayleigh speed, linear in s;
     # a scan from v = 0 finds the first sign change, regula falsi (Illinois) refines it
-    scan = np.concatenate([np.linspace(1.0, 0.1, 10), np.geomspace(0.1, 1e-3, 5)[1:]])
+    # (down to s = 1e-5: near the end of a layered ground's branch, at the free track's
+    # crossing of c_1, the root lies at s ~ 1e-3 and below)
+    scan = np.concatenate([np.linspace(1.0, 0.1, 10), np.geomspace(0.1, 1e-5, 9)[1:]])
     grid = np.broadcast_to(scan, (k.size, scan.size))
     values = f(grid, k[:, None], top[:, None])
     rows = np.arange(k.size)
