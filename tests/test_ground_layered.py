@@ -34,6 +34,9 @@ def test_bad_arguments_are_named():
         LayeredGround(rt.WinklerGround(1e8, A), B, A)
     with pytest.raises(ValueError, match="width"):
         LayeredGround(soil, -1.0, A)
+    for rails in (0, 1.5, True):
+        with pytest.raises(ValueError, match="rails"):
+            LayeredGround(soil, 2.5, A, rails=rails)
     with pytest.raises(ValueError, match="footprint"):
         rt.solve(TRACK, TRAIN, rt.LinearFoundation(1e8), harmonics=2,
                  ground=LayeredGround(soil, B, 0.7))         # a > L = 0.6 m
@@ -54,22 +57,25 @@ def test_a_thin_layer_on_a_rigid_base_tends_to_the_winkler_compliance():
     worst = []
     for h in (0.08, 0.04, 0.01):
         layer, soil = _thin_layer(h)
-        c = LayeredGround(soil, B, A).compliance(kx, 16.0)
+        c = LayeredGround(soil, B, A, rails=1).compliance(kx, 16.0)
         worst.append(np.max(np.abs(c * layer.constrained_modulus * B / h - 1)))
+        # both rails load the strip: one rail's share of the sleeper settles twice as much
+        assert np.allclose(LayeredGround(soil, B, A).compliance(kx, 16.0), 2 * c, rtol=1e-14)
     assert worst[-1] < 0.02 and worst[-1] < worst[1] < worst[0]
 
 
 def test_a_thin_stiff_layer_on_a_rigid_base_is_the_winkler_spring_in_series():
-    # end to end: the law k_f in series with k_s = M a b / h (M = lambda + 2 mu) is one linear
-    # spring, today's solve.  The mean: LayeredGround drops the uniform settlement
-    # C(0, 0) / L f_0 = h / (M b L) f_0 (infinite on a half-space), which is put back here.
+    # end to end: the law k_f in series with k_s = M a (b / 2) / h (M = lambda + 2 mu) is one
+    # linear spring, today's solve: the track models one rail, whose half sleeper stands on
+    # half the strip (rails=2).  The mean: LayeredGround drops the uniform settlement
+    # 2 C(0, 0) / L f_0 = 2 h / (M b L) f_0 (infinite on a half-space), put back here.
     # At h = 1 cm the compliance is within 1.3 % of Winkler (the test above); measured 1.2e-3
     # at h = 1 cm against 1.7e-2 at h = 4 cm, and 8e-2 without the mean put back.  ~30 s: the
     # strip's k_y quadrature for 129 wavenumbers per harmonic (docs/ground_coupling.md).
     k_f, m, h = 1.2e8, 2, 0.01
     spacing = float(rt.Passage(TRACK, TRAIN).sleeper_spacing)
     layer, soil = _thin_layer(h)
-    k_s = layer.constrained_modulus * A * B / h
+    k_s = layer.constrained_modulus * A * (B / 2) / h
     with pytest.warns(rt.TruncationWarning):
         winkler = rt.solve(TRACK, TRAIN, rt.LinearFoundation(k_f * k_s / (k_f + k_s)),
                            harmonics=m)
@@ -79,7 +85,7 @@ def test_a_thin_stiff_layer_on_a_rigid_base_is_the_winkler_spring_in_series():
     w, truth = np.asarray(ours.coefficients), np.array(winkler.coefficients, dtype=complex)
     mean = truth.size // 2                                   # two-sided: n = 0 in the middle
     f_0 = k_f * k_s / (k_f + k_s) * truth[mean]              # the mean force per sleeper [N]
-    truth[mean] -= f_0 * h / (layer.constrained_modulus * B * spacing)
+    truth[mean] -= f_0 * h / (layer.constrained_modulus * (B / 2) * spacing)
     assert np.max(np.abs(w - truth)) < 5e-3 * np.max(np.abs(truth))
 
 
@@ -181,7 +187,7 @@ def test_the_short_waves_interpolated_agree_with_the_strip_integrated_at_every_w
     # the lattice sum's 129 wavenumbers of one harmonic: LayeredGround integrates |k_x| < K
     # and interpolates beyond, reading F from a table; the truth integrates each of them
     kx = (0.37 + 2 * np.pi * np.arange(-64, 65)) / 0.6
-    ours = LayeredGround(soil, 2.5, A).compliance(kx, omega)
+    ours = LayeredGround(soil, 2.5, A, rails=1).compliance(kx, omega)
     assert np.max(np.abs(ours / _integrated(monkeypatch, soil, kx, omega) - 1)) < 3e-7
 
 
@@ -189,7 +195,7 @@ def test_an_interpolant_that_fails_its_check_gives_way_to_the_integral(monkeypat
     import railtrack.equations.ground_layered as layered
     import railtrack.equations.ground_table as table
     kx = (0.37 + 2 * np.pi * np.arange(-64, 65)) / 0.6
-    ground = LayeredGround(SOILS[0], 2.5, A)
+    ground = LayeredGround(SOILS[0], 2.5, A, rails=1)
     interpolated = ground.compliance(kx, 400.0)
     exact = _integrated(monkeypatch, SOILS[0], kx, 400.0)
     monkeypatch.setattr(layered, "_CHECK", 0.0)          # no interpolant passes

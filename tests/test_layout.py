@@ -35,7 +35,7 @@ PUBLIC = {
     "PlausibilityWarning", "plausible_ranges", "plausibility",
 }
 PUBLIC |= {"RailSection", "UIC60", "UIC54", "DesignSummary", "eisenmann_factor"}   # issue 29
-PUBLIC |= {"WinklerGround", "GroundSolution"}                                          # issue 31
+PUBLIC |= {"WinklerGround", "GroundSolution", "SoilLayer", "Ground", "LayeredGround"}  # issue 31
 PUBLIC |= {"Vehicle"}   # issue 32: wheel=Vehicle in solve and simulate_time_domain
 
 

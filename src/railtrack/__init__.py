@@ -59,6 +59,8 @@ from .timedomain.timestep import TimeStepWarning, estimate_step_error
 from .equations.load import axle_factor, load_coefficients
 from .model.passage import Passage
 from .model.ground_protocol import WinklerGround
+from .model.ground import Ground, SoilLayer
+from .equations.ground_layered import LayeredGround
 from .solvers.ground_solution import GroundSolution
 from .model.cell import SleeperCell
 from .model.gap import GapFoundation
@@ -96,6 +98,9 @@ __all__ = [
     "Train",
     "Passage",
     "WinklerGround",
+    "SoilLayer",
+    "Ground",
+    "LayeredGround",
     "GroundSolution",
     "LinearFoundation",
     "BilinearFoundation",

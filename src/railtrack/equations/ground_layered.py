@@ -65,6 +65,12 @@ class LayeredGround:
         True (default): the displacement averaged over the strip's width, for
         a sleeper that moves as one across the track; False: on the centre
         line (Dieterman & Metrikine 1996).
+    rails : int
+        How many rails load the strip alike (default 2).  `railtrack.Track`
+        models one rail and the share of the sleeper under it, so the force
+        its law passes is 1/rails of the strip's line load per sleeper: C is
+        rails times the strip's w / P, the settlement per newton of one
+        rail's share.  ``rails=1`` is a strip under one rail alone.
 
     Notes
     -----
@@ -89,6 +95,7 @@ class LayeredGround:
     width: float
     footprint: float
     average: bool = True
+    rails: int = 2
 
     def __post_init__(self) -> None:
         if not isinstance(self.ground, Ground):
@@ -98,6 +105,10 @@ class LayeredGround:
         require_positive("footprint", self.footprint, "m")
         if not isinstance(self.average, (bool, np.bool_)):
             raise TypeError(f"average must be True or False; got {self.average!r}")
+        if not isinstance(self.rails, (int, np.integer)) or isinstance(self.rails, bool) \
+                or self.rails < 1:
+            raise ValueError(f"rails must be a whole number >= 1 (2: both rails of the track "
+                             f"load the strip); got {self.rails!r}")
         object.__setattr__(self, "width", float(self.width))
         object.__setattr__(self, "footprint", float(self.footprint))
 
@@ -110,7 +121,7 @@ class LayeredGround:
         if np.any(dynamic):
             # C is even in k_x: each |k_x| once
             wanted, back = np.unique(np.abs(kx[dynamic]), return_inverse=True)
-            values[dynamic] = self._even(wanted, omega)[back]
+            values[dynamic] = self.rails * self._even(wanted, omega)[back]
         return values
 
     def _flexibility(self, kx, omega):
