@@ -129,7 +129,9 @@ def test_pairs_of_wavenumber_and_frequency_are_each_the_scalar_call():
     assert together.shape == (3, 3)
     for (i, j), value in np.ndenumerate(together):
         alone = strip_stiffness(CLAY, kx[0, j], omega[i, 0], WIDTH, average=True)
-        assert np.shape(alone) == () and value == pytest.approx(alone, rel=1e-13)
+        # one frequency with many nodes reads F from a table (railtrack.equations.ground_table),
+        # good to ~3e-8: a call alone and a call in a batch agree to that, not to round-off
+        assert np.shape(alone) == () and value == pytest.approx(alone, rel=1e-8)
 
 
 def test_bad_strips_are_refused_by_name():

@@ -5,13 +5,16 @@ flexibility F(k, omega) of `railtrack.equations.ground_stiffness` at every
 node k = sqrt(k_x^2 + k_y^2) of every k_x it integrates: tens of thousands of
 nodes for the lattice sum of one harmonic, each a stiffness-matrix solve.
 At one omega, F is a function of k alone, so it is computed once on a table
-and the nodes read it by a cubic spline in ln k of k F (finite at both
+and the nodes read it by a quintic spline in ln k of k F (finite at both
 ends: (1 - nu) / mu* at short waves, k F(0, omega) -> 0 at long ones).
 
 The table is geometric, k growing by 4 % from node to node, and by
-xi / 24 across the surface waves and the half-space's branch points
-(k from 0.9 omega / c_P of the half-space to 1.1 omega / (0.8 c_min)), where
-F has poles a hysteretic damping ratio xi wide.  It is checked where it is
+xi / 12 across the surface waves and the half-space's branch points
+(k from 0.9 omega / c_P of the half-space to 1.5 omega / (0.8 c_min)), where
+F has poles a hysteretic damping ratio xi wide, and by 1 % on either side
+(from 0.5 omega / c_P, and up to 4 omega / (0.8 c_min)); a quintic spline
+there is good to about 3e-8, where a cubic one needed steps of xi / 24 for
+2e-7 (measured on three soils at 0 to 2000 rad/s).  It is checked where it is
 weakest, halfway between nodes: at 64 such points the spline must agree
 with F to 3e-7 of max |k F|, or every node is computed directly.  A table
 that would not be smaller than a third of the nodes is not built.
@@ -20,15 +23,16 @@ that would not be smaller than a third of the nodes is not built.
 from __future__ import annotations
 
 import numpy as np
-from scipy.interpolate import CubicSpline
+from scipy.interpolate import make_interp_spline
 
 from ..model.ground import Ground
 from .ground_stiffness import surface_flexibility
 
 __all__ = ["radial_flexibility"]
 
-_STEP = 0.02             # the table's growth in k away from the surface waves
-_POLE_FRACTION = 1 / 24   # and across them, of the smallest damping ratio
+_STEP = 0.04             # the table's growth in k away from the surface waves
+_NEAR_STEP = 0.01        # beside them (the poles' tails, the P wave's branch point)
+_POLE_FRACTION = 1 / 12   # and across them, of the smallest damping ratio
 _CHECKS = 64
 _CHECK = 3e-7
 
@@ -41,8 +45,12 @@ def _table(ground: Ground, low: float, high: float, omega: float) -> np.ndarray:
         slow = abs(omega) / (0.8 * ground.slowest_shear_wave_speed)
         # across the poles at xi / 8, and their tails at 0.5 % (a pole's tail falls like
         # 1 / (k - k_R): steps of 2 % a few tens of per cent from it are not enough)
-        for start, stop, step in ((0.9 * abs(omega) / ground.halfspace.p_wave_speed, 1.5 * slow,
-                                   _POLE_FRACTION * xi), (1.5 * slow, 4.0 * slow, 0.005)):
+        k_p = abs(omega) / ground.halfspace.p_wave_speed
+        # the P wave's branch point reaches below 0.9 k_P (a cubic table of 2 % steps was
+        # off by 5e-7 at 0.84 k_P), and a pole's tail beyond 1.5 k_slow
+        for start, stop, step in ((0.5 * k_p, 0.9 * k_p, _NEAR_STEP),
+                                  (0.9 * k_p, 1.5 * slow, _POLE_FRACTION * xi),
+                                  (1.5 * slow, 4.0 * slow, _NEAR_STEP)):
             start, stop = max(start, low), min(stop, high)
             if stop > start:
                 nodes.append(np.geomspace(start, stop,
@@ -70,13 +78,14 @@ def radial_flexibility(ground: Ground, k: np.ndarray, omega: float) -> np.ndarra
     if high <= low * (1 + _STEP):
         return surface_flexibility(ground, k, omega)
     nodes = _table(ground, low, high, omega)
-    if 3 * nodes.size > k.size:
+    if 3 * nodes.size > k.size or nodes.size < 12:           # a quintic spline needs > 5
         return surface_flexibility(ground, k, omega)
-    spline = CubicSpline(np.log(nodes), nodes * surface_flexibility(ground, nodes, omega))
+    values = nodes * surface_flexibility(ground, nodes, omega)
+    spline = make_interp_spline(np.log(nodes), values, k=5)
     # halfway between nodes, spread over the table (the fine part included)
     picks = np.linspace(0, nodes.size - 2, _CHECKS).astype(int)
     middle = np.sqrt(nodes[picks] * nodes[picks + 1])
     error = np.abs(spline(np.log(middle)) - middle * surface_flexibility(ground, middle, omega))
-    if np.max(error) > _CHECK * np.max(np.abs(spline.c[-1])):
+    if np.max(error) > _CHECK * np.max(np.abs(values)):
         return surface_flexibility(ground, k, omega)
     return spline(np.log(k)) / k

@@ -216,7 +216,8 @@ def predict_harmonics(passage: Passage, foundation, accuracy: float,
     accuracy : float
         Target relative error [-], 0 < accuracy < 1.
     ground : GroundCompliance, optional
-        Predict the relative displacement d on this ground (eq. G2).
+        The solve is on this ground (eq. G2): m is predicted on the rigid
+        ground and the spectrum returned is the ground's, up to 8 m.
 
     Returns
     -------
@@ -225,6 +226,12 @@ def predict_harmonics(passage: Passage, foundation, accuracy: float,
     spectrum : TrackSpectrum
         The linear coefficients up to at least 8 m, for the solve and its estimate.
     """
+    if ground is not None:
+        # predicted on the rigid ground, whose spectrum costs nothing: on a soil the lattice
+        # sums of the ~300 harmonics the prediction scans would cost most of the solve; the
+        # solution's own estimate, on the ground, then grows m if the soil needs more
+        chosen, _ = predict_harmonics(passage, foundation, accuracy)
+        return chosen, track_spectrum(passage, TAIL_FACTOR * chosen, ground)
     mass = float(passage.sleeper_mass)
     mean = static_deflection(foundation, float(passage.static_load_per_sleeper))
     if np.isfinite(mean):
