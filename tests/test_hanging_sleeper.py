@@ -55,3 +55,22 @@ def test_the_neighbours_carry_more_the_wider_the_gap():
     hanging = [p.peak_foundation_force[15] for p in peaks]
     assert np.all(np.diff(neighbour) > 0) and np.all(np.diff(hanging) < 0)
     assert hanging[-1] == 0.0 and peaks[-1].contact_fraction[15] == 0.0
+
+
+def test_a_wheel_solution_is_read_like_the_cell_and_a_massless_wheel_is_the_constant_force():
+    # the limit m_w -> 0: a wheel without mass presses with its load whatever the rail does,
+    # so over a hanging sleeper every sleeper's extremes are the constant-force cell's
+    cell = hanging_cell(PAPER, SOUND, 1e-3)
+    forces = sleeper_extremes(rt.solve(TRACK, TRAIN, cell, 200))
+    with pytest.warns(rt.PlausibilityWarning, match="unsprung"):   # a limit, not a wheel
+        massless = rt.Wheel(1e-3)
+    wheels = sleeper_extremes(rt.solve(TRACK, TRAIN, cell, 200, wheel=massless))
+    for name in ("peak_seat_load", "peak_foundation_force", "lowest_displacement"):
+        np.testing.assert_allclose(getattr(wheels, name), getattr(forces, name), rtol=1e-4)
+    # a heavy wheel at speed changes the neighbours' loads: the reading sees the wheels
+    fast = rt.Train.paper(speed=100.0)
+    cell = hanging_cell(rt.Passage(TRACK, fast), SOUND, 1e-3)
+    forces = sleeper_extremes(rt.solve(TRACK, fast, cell))
+    wheels = sleeper_extremes(rt.solve(TRACK, fast, cell, wheel=rt.Wheel(900.0)))
+    assert np.max(np.abs(wheels.peak_foundation_force[AROUND] / forces.peak_foundation_force[
+        AROUND] - 1)) > 0.05

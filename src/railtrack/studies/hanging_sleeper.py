@@ -21,6 +21,7 @@ from ..model.foundations import LinearFoundation
 from ..model.gap import GapFoundation
 from ..model.passage import Passage
 from ..solvers.cell_solution import CellSolution
+from ..solvers.wheel_solution import WheelSolution
 
 __all__ = ["hanging_cell", "SleeperExtremes", "sleeper_extremes", "moment_extremes"]
 
@@ -58,7 +59,7 @@ class SleeperExtremes(NamedTuple):
 
 def _histories(solution):
     """(seat load, foundation force, displacement), each (N, instants), from either method."""
-    if isinstance(solution, CellSolution):
+    if isinstance(solution, (CellSolution, WheelSolution)):
         t = solution.one_period(SAMPLES)[0]
         return (solution.rail_seat_load(t), solution.foundation_force(t),
                 solution.sleeper_displacement(t))
@@ -67,7 +68,7 @@ def _histories(solution):
 
 
 def sleeper_extremes(solution) -> SleeperExtremes:
-    """Extremes of every sleeper of a `CellSolution` or of the ring's sleepers."""
+    """Extremes of every sleeper of a `CellSolution`, a `WheelSolution` or the ring's sleepers."""
     seat, force, displacement = _histories(solution)
     return SleeperExtremes(seat.max(axis=1), force.max(axis=1), displacement.min(axis=1),
                            np.mean(force > 0.0, axis=1))
