@@ -74,3 +74,18 @@ def test_a_wheel_solution_is_read_like_the_cell_and_a_massless_wheel_is_the_cons
     wheels = sleeper_extremes(rt.solve(TRACK, fast, cell, wheel=rt.Wheel(900.0)))
     assert np.max(np.abs(wheels.peak_foundation_force[AROUND] / forces.peak_foundation_force[
         AROUND] - 1)) > 0.05
+
+
+def test_the_neighbours_rise_is_nothing_without_a_void_and_follows_chapter_13_with_one():
+    from railtrack.studies.hanging_sleeper import neighbour_rise
+    sound = rt.solve(TRACK, TRAIN, hanging_cell(PAPER, SOUND, 0.0), 200)
+    # identical sleepers peak alike, to the sampling of the period (2048 instants)
+    assert np.allclose(neighbour_rise(sound, sound, 15), 0.0, atol=1e-4)   # measured: 1.2e-5
+    # a sleeper that never touches (5 mm) under a static train carries nothing: its two
+    # neighbours share its load, each well under half of it again (the rail spreads it)
+    slow = rt.Train.paper(speed=5.0)
+    walking = rt.Passage(TRACK, slow)
+    force, depth = neighbour_rise(rt.solve(TRACK, slow, hanging_cell(walking, SOUND, 0.0), 200),
+                                  rt.solve(TRACK, slow, hanging_cell(walking, SOUND, 5e-3), 200),
+                                  15)
+    assert 0.0 < force < 0.5 and abs(depth - force) < 0.01   # a weak dashpot at walking pace
