@@ -149,7 +149,7 @@ SKIPPABLE_SECTIONS = {
                                 "One defect in how many sleepers?"],
     "14_wheel_on_the_rail": ["How the library solves them",
                              "Checks: the wheel that becomes a constant force"],
-    "17_conclusions": ["Misprints"],
+    "18_conclusions": ["Misprints"],
 }
 DERIVATION_CHAPTERS = ["02_rail_receptance", "03_sleeper_dynamics", "04_train_load",
                        "05_semi_analytical_method", "06_linear_foundation",
