@@ -412,6 +412,28 @@ ANSWERS = {
         ("(b): the crossing's frequency", r"m = 2620 kg/m: .*at ([\d.]+) Hz", "Hz", 0.005,
          r"2620|heav|embankment|mass|cross"),
     ],
+    "17.1": [
+        ("(a): the loaded coach's static wheel load", r"loaded: wheel load ([\d.]+) kN", "kN",
+         0.05),
+        ("(b): its body's bounce", r"loaded: .*body bounce ([\d.]+) Hz", "Hz", 0.005,
+         r"bounce|loaded|body"),
+    ],
+    "17.2": [
+        ("the neighbour's share with half the wheel's mass", r"m_w = 453 kg: neighbour \+(\d+)%",
+         "%", 0.5, r"453|half|m_w"),
+        ("the neighbour's share with twice the wheel's mass",
+         r"m_w = 1813 kg: neighbour \+(\d+)%", "%", 0.5, r"1813|doubl|twice"),
+    ],
+    "17.3": [
+        ("(a): the contact overload at 150 m/s", r"150 m/s: contact overload \+(\d+)%", "%", 0.5,
+         r"overload|contact"),
+        ("(a): the contact overload at 200 m/s", r"200 m/s: contact overload \+(\d+)%", "%", 0.5,
+         r"overload|contact"),
+        ("(b): the product at 150 m/s", r"150 m/s: .*product \+(\d+)%", "%", 0.5,
+         r"product|overload"),
+        ("(b): the product at 200 m/s", r"200 m/s: .*product \+(\d+)%", "%", 0.5,
+         r"product|overload"),
+    ],
     "18.1": [
         ("paper's track: steps to 0.1 %",
          r"paper's track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0),
