@@ -69,7 +69,7 @@ def _text(name):
         ),
         ("10_train_speeds_up.ipynb", "what sets it is left open here"),
         (
-            "17_conclusions.ipynb",
+            "18_conclusions.ipynb",
             "The peak of the damped, discretely supported track lies",
         ),
         (
@@ -93,7 +93,7 @@ def test_the_wrong_reasons_are_gone(page, wrong):
     "page",
     [
         "10_train_speeds_up.ipynb",
-        "17_conclusions.ipynb",
+        "18_conclusions.ipynb",
         "instructor.md",
         "glossary.md",
     ],

@@ -413,6 +413,28 @@ ANSWERS = {
          r"2620|heav|embankment|mass|cross"),
     ],
     "17.1": [
+        ("(a): the loaded coach's static wheel load", r"loaded: wheel load ([\d.]+) kN", "kN",
+         0.05),
+        ("(b): its body's bounce", r"loaded: .*body bounce ([\d.]+) Hz", "Hz", 0.005,
+         r"bounce|loaded|body"),
+    ],
+    "17.2": [
+        ("the neighbour's share with half the wheel's mass", r"m_w = 453 kg: neighbour \+(\d+)%",
+         "%", 0.5, r"453|half|m_w"),
+        ("the neighbour's share with twice the wheel's mass",
+         r"m_w = 1813 kg: neighbour \+(\d+)%", "%", 0.5, r"1813|doubl|twice"),
+    ],
+    "17.3": [
+        ("(a): the contact overload at 150 m/s", r"150 m/s: contact overload \+(\d+)%", "%", 0.5,
+         r"overload|contact"),
+        ("(a): the contact overload at 200 m/s", r"200 m/s: contact overload \+(\d+)%", "%", 0.5,
+         r"overload|contact"),
+        ("(b): the product at 150 m/s", r"150 m/s: .*product \+(\d+)%", "%", 0.5,
+         r"product|overload"),
+        ("(b): the product at 200 m/s", r"200 m/s: .*product \+(\d+)%", "%", 0.5,
+         r"product|overload"),
+    ],
+    "18.1": [
         ("paper's track: steps to 0.1 %",
          r"paper's track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0),
         ("ballasted track: rho_0", r"ballasted track: rho_0 = ([\d.]+)", "rho_0", 0.0005),
@@ -423,14 +445,14 @@ ANSWERS = {
          r"ballasted track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0,
          r"ballast"),
     ],
-    "17.2": [
+    "18.2": [
         ("peak rail-seat load with eta1 doubled, 45 m/s",
          r"45 m/s, eta1 = 2 MN s/m: seat ([\d.]+) Q", "Q", 0.0005),
         ("deepest sleeper with eta1 doubled, 45 m/s",
          r"45 m/s, eta1 = 2 MN s/m: seat [\d.]+ Q, sleeper ([\d.]+) mm", "mm", 0.0005,
          r"2 MN|2000|doubl|twice"),
     ],
-    "17.3": [
+    "18.3": [
         # the sweep's grid is 0.5 m/s
         # (a peak speed counts where its sentence names the pad it is for:
         # chapter 10's 356 m/s is the smeared speed of the pad of Table 1)
@@ -448,7 +470,7 @@ ANSWERS = {
          r"smeared"),
         ("the peak's shift", r"peak moved by ([\d.]+) %", "%", 0.05),
     ],
-    "17.4": [
+    "18.4": [
         ("critical speed of the rigid-pad beam", r"v_inf = ([\d.]+) m/s", "m/s", 0.05,
          r"critical|rigid|v_\\?inf|infty|peak"),
         ("peak with a pad 100 times stiffer", r"peak of eq\. \(23\), k1 = 22000 MN/m: (\d+) m/s",

@@ -55,3 +55,37 @@ def test_the_neighbours_carry_more_the_wider_the_gap():
     hanging = [p.peak_foundation_force[15] for p in peaks]
     assert np.all(np.diff(neighbour) > 0) and np.all(np.diff(hanging) < 0)
     assert hanging[-1] == 0.0 and peaks[-1].contact_fraction[15] == 0.0
+
+
+def test_a_wheel_solution_is_read_like_the_cell_and_a_massless_wheel_is_the_constant_force():
+    # the limit m_w -> 0: a wheel without mass presses with its load whatever the rail does,
+    # so over a hanging sleeper every sleeper's extremes are the constant-force cell's
+    cell = hanging_cell(PAPER, SOUND, 1e-3)
+    forces = sleeper_extremes(rt.solve(TRACK, TRAIN, cell, 200))
+    with pytest.warns(rt.PlausibilityWarning, match="unsprung"):   # a limit, not a wheel
+        massless = rt.Wheel(1e-3)
+    wheels = sleeper_extremes(rt.solve(TRACK, TRAIN, cell, 200, wheel=massless))
+    for name in ("peak_seat_load", "peak_foundation_force", "lowest_displacement"):
+        np.testing.assert_allclose(getattr(wheels, name), getattr(forces, name), rtol=1e-4)
+    # a heavy wheel at speed changes the neighbours' loads: the reading sees the wheels
+    fast = rt.Train.paper(speed=100.0)
+    cell = hanging_cell(rt.Passage(TRACK, fast), SOUND, 1e-3)
+    forces = sleeper_extremes(rt.solve(TRACK, fast, cell))
+    wheels = sleeper_extremes(rt.solve(TRACK, fast, cell, wheel=rt.Wheel(900.0)))
+    assert np.max(np.abs(wheels.peak_foundation_force[AROUND] / forces.peak_foundation_force[
+        AROUND] - 1)) > 0.05
+
+
+def test_the_neighbours_rise_is_nothing_without_a_void_and_follows_chapter_13_with_one():
+    from railtrack.studies.hanging_sleeper import neighbour_rise
+    sound = rt.solve(TRACK, TRAIN, hanging_cell(PAPER, SOUND, 0.0), 200)
+    # identical sleepers peak alike, to the sampling of the period (2048 instants)
+    assert np.allclose(neighbour_rise(sound, sound, 15), 0.0, atol=1e-4)   # measured: 1.2e-5
+    # a sleeper that never touches (5 mm) under a static train carries nothing: its two
+    # neighbours share its load, each well under half of it again (the rail spreads it)
+    slow = rt.Train.paper(speed=5.0)
+    walking = rt.Passage(TRACK, slow)
+    force, depth = neighbour_rise(rt.solve(TRACK, slow, hanging_cell(walking, SOUND, 0.0), 200),
+                                  rt.solve(TRACK, slow, hanging_cell(walking, SOUND, 5e-3), 200),
+                                  15)
+    assert 0.0 < force < 0.5 and abs(depth - force) < 0.01   # a weak dashpot at walking pace

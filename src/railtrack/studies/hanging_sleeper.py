@@ -21,18 +21,24 @@ from ..model.foundations import LinearFoundation
 from ..model.gap import GapFoundation
 from ..model.passage import Passage
 from ..solvers.cell_solution import CellSolution
+from ..solvers.wheel_solution import WheelSolution
 
-__all__ = ["hanging_cell", "SleeperExtremes", "sleeper_extremes", "moment_extremes"]
+__all__ = ["hanging_cell", "neighbour_rise", "SleeperExtremes", "sleeper_extremes",
+           "moment_extremes"]
 
 SAMPLES = 2048
 """Instants per period at which a harmonic-balance solution is read."""
 
 
 def hanging_cell(passage: Passage, law: LinearFoundation, gap: float, *, sleepers: int = 30,
-                 at: int | None = None, gravity: float = 0.0) -> SleeperCell:
+                 at: int | None = None, gravity: float = 0.0,
+                 hanging_mass: float | None = None) -> SleeperCell:
     """N sleepers of the passage on `law`, sleeper `at` (default N // 2) hanging `gap` [m] above it.
 
-    ``gap = 0`` gives the sound cell (every sleeper on `law`).
+    ``gap = 0`` gives the sound cell (every sleeper on `law`).  `hanging_mass`
+    [kg], if given, is the hanging sleeper's mass: on a track whose sleeper
+    mass includes the ballast that moves with it, the sleeper over a void
+    keeps only its own.
 
     Examples
     --------
@@ -44,7 +50,45 @@ def hanging_cell(passage: Passage, law: LinearFoundation, gap: float, *, sleeper
     cell = SleeperCell.identical(passage, law, sleepers, gravity=gravity)
     if gap == 0:
         return cell
-    return cell.with_sleeper(at, foundation=GapFoundation(gap, law.stiffness, law.damping))
+    void = GapFoundation(gap, law.stiffness, law.damping)
+    if hanging_mass is None:
+        return cell.with_sleeper(at, foundation=void)
+    return cell.with_sleeper(at, foundation=void, sleeper_mass=hanging_mass)
+
+
+def neighbour_rise(sound, hanging, at: int) -> tuple[float, float]:
+    """How much more the more loaded neighbour of sleeper `at` takes than a sound sleeper.
+
+    Parameters
+    ----------
+    sound, hanging : CellSolution or WheelSolution
+        The same track and train on the sound cell and on the cell with
+        sleeper `at` hanging (`hanging_cell`).
+    at : int
+        The hanging sleeper.
+
+    Returns
+    -------
+    (float, float)
+        The largest of the two neighbours' peak foundation forces, and of
+        their deepest displacements, over the sound track's sleeper `at`,
+        minus 1 [-] (0.25: a quarter more).
+
+    Examples
+    --------
+    >>> import railtrack as rt
+    >>> p, law = Passage.paper(), LinearFoundation(20e6, 2e5)
+    >>> solved = [rt.solve(p.track, p.train, hanging_cell(p, law, gap, sleepers=30), 200)
+    ...           for gap in (0.0, 1e-3)]
+    >>> force, depth = neighbour_rise(*solved, at=15)
+    >>> round(force, 2), round(depth, 2)
+    (0.24, 0.2)
+    """
+    before, after = sleeper_extremes(sound), sleeper_extremes(hanging)
+    side = [at - 1, at + 1]
+    force = after.peak_foundation_force[side] / before.peak_foundation_force[at]
+    depth = after.lowest_displacement[side] / before.lowest_displacement[at]
+    return float(force.max() - 1.0), float(depth.max() - 1.0)
 
 
 class SleeperExtremes(NamedTuple):
@@ -58,7 +102,7 @@ class SleeperExtremes(NamedTuple):
 
 def _histories(solution):
     """(seat load, foundation force, displacement), each (N, instants), from either method."""
-    if isinstance(solution, CellSolution):
+    if isinstance(solution, (CellSolution, WheelSolution)):
         t = solution.one_period(SAMPLES)[0]
         return (solution.rail_seat_load(t), solution.foundation_force(t),
                 solution.sleeper_displacement(t))
@@ -67,7 +111,7 @@ def _histories(solution):
 
 
 def sleeper_extremes(solution) -> SleeperExtremes:
-    """Extremes of every sleeper of a `CellSolution` or of the ring's sleepers."""
+    """Extremes of every sleeper of a `CellSolution`, a `WheelSolution` or the ring's sleepers."""
     seat, force, displacement = _histories(solution)
     return SleeperExtremes(seat.max(axis=1), force.max(axis=1), displacement.min(axis=1),
                            np.mean(force > 0.0, axis=1))
