@@ -203,3 +203,19 @@ def test_an_interpolant_that_fails_its_check_gives_way_to_the_integral(monkeypat
     integrated = ground.compliance(kx, 400.0)
     assert np.max(np.abs(integrated / exact - 1)) < 1e-13
     assert 0 < np.max(np.abs(interpolated / exact - 1)) < 3e-7
+
+
+@pytest.mark.parametrize("law", [rt.LinearFoundation.paper(), rt.CubicFoundation.paper(0.8)],
+                         ids=["linear", "cubic"])
+def test_the_wheel_loads_work_is_what_pad_law_and_soil_take(law):
+    # a conservation law, the check a time-domain run would give: over a period the moving
+    # loads' work = pad + law + the soil (radiated and damped); a wrong conjugate in eq. (G1)
+    # or a wrong sign of Im C would make the soil give energy back (measured: 7e-8, 7e-11)
+    soil = Ground((SoilLayer(45.0, 0.49, 1300.0, 0.03, thickness=4.0),),
+                  SoilLayer(150.0, 0.45, 1800.0, 0.03))
+    ground = LayeredGround(soil, width=3.0, footprint=A)
+    s = rt.solve(TRACK, TRAIN, law, harmonics=12, ground=ground)
+    energy = rt.dissipation(s)
+    assert s.converged
+    assert energy.ground > 0.5 * energy.total          # most of it goes into the soft soil
+    assert abs(rt.load_work(s) / energy.total - 1) < 1e-6
