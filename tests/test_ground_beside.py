@@ -184,7 +184,9 @@ def test_an_offset_is_finite_and_a_winkler_ground_has_no_beside():
         s.surface_displacement(0.0, 2.0)
     ground = LayeredGround(HALF, B, A)
     for bad in (np.inf, np.nan):
-        with pytest.raises(ValueError, match="offset must be a finite"):
+        with pytest.raises(ValueError, match="offset must be a finite number in m"):
             ground.surface_compliance(np.array([1.0]), 0.0, bad)
-        with pytest.raises(ValueError, match="offset must be a finite"):
+        with pytest.raises(ValueError, match="offset must be a finite number in m"):
             surface_receptance(ground, np.array([1.0]), 40.0, L, bad)
+    with pytest.raises(ValueError, match="offset must be a finite number in m"):
+        _soft_solve(30.0).surface_displacement(0.0, np.inf)

@@ -29,6 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..model.ground_protocol import check_ground
+from ..model.validation import require_finite
 from .ground_lattice import TERMS, lattice_sums
 
 __all__ = ["surface_receptance"]
@@ -88,9 +89,8 @@ def surface_receptance(ground, omega: np.ndarray, speed: float, spacing: float,
             f"{type(ground).__name__} gives no displacement beside the track: it needs "
             "surface_compliance(kx, omega, offset), as railtrack.LayeredGround has (a "
             "Winkler bed's springs move only under their own sleeper)")
+    require_finite("offset", offset, "m")
     offset = float(offset)
-    if not np.isfinite(offset):
-        raise ValueError(f"offset must be a finite distance [m]; got {offset!r}")
     omega = np.asarray(omega, dtype=float)
     flat = omega.ravel()
 

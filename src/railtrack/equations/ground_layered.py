@@ -38,7 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.ground import Ground
-from ..model.validation import require_positive
+from ..model.validation import require_finite, require_positive
 from .ground_strip import static_strip_flexibility, strip_flexibility
 
 __all__ = ["LayeredGround"]
@@ -136,10 +136,8 @@ class LayeredGround:
         >>> bool(near.real > 0), complex(far)      # e^(-200 * 2.75): nothing
         (True, 0j)
         """
-        offset = float(offset)
-        if not np.isfinite(offset):
-            raise ValueError(f"offset must be a finite distance [m]; got {offset!r}")
-        return self._compliance(kx, omega, False, abs(offset))
+        require_finite("offset", offset, "m")
+        return self._compliance(kx, omega, False, abs(float(offset)))
 
     def _compliance(self, kx, omega, average, offset):
         kx = np.asarray(kx, dtype=float)

@@ -89,6 +89,8 @@ class GroundSolution(Solution):
         ------
         TypeError
             A ground without ``surface_compliance`` (e.g. a WinklerGround).
+        ValueError
+            An offset that is not finite.
 
         Examples
         --------
@@ -102,9 +104,6 @@ class GroundSolution(Solution):
         >>> bool(0 < far < near)
         True
         """
-        offset = float(offset)
-        if not np.isfinite(offset):
-            raise ValueError(f"offset must be a finite distance [m]; got {offset!r}")
         m = self.harmonics
         receptance, _ = surface_receptance(self.ground, self.frequencies[m:],
                                            float(self.passage.speed),
