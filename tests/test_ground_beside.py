@@ -190,3 +190,35 @@ def test_an_offset_is_finite_and_a_winkler_ground_has_no_beside():
             surface_receptance(ground, np.array([1.0]), 40.0, L, bad)
     with pytest.raises(ValueError, match="offset must be a finite number in m"):
         _soft_solve(30.0).surface_displacement(0.0, np.inf)
+
+
+@pytest.mark.parametrize("omega", [40.0, 400.0])
+@pytest.mark.parametrize("y", [0.0, 0.7, 2.0])
+def test_the_short_waves_beside_agree_with_the_strip_integrated_at_every_wavenumber(
+        y, omega, monkeypatch):
+    # one harmonic's 129 lattice wavenumbers: under the strip LayeredGround interpolates
+    # k_x^3 (C_y - static C_y) beyond the surface waves, beside it cuts at e^-36; the
+    # truth integrates every k_x with F computed at every node (no table).  Beside the
+    # strip the cut must have served (fewer k_x integrated than asked).  Under it, at
+    # 40 and 100 rad/s, the interpolant misses its 1e-7 check (measured: it passes 1e-5,
+    # as with LayeredGround(average=False)) and all 129 are integrated: slower, as exact
+    import railtrack.equations.ground_layered as layered
+    import railtrack.equations.ground_strip as strip
+    kx = (0.37 + 2 * np.pi * np.arange(-64, 65)) / L
+    asked = []
+
+    def counted(ground, k, w, width, average, offset):
+        asked.append(np.size(k))
+        return strip.strip_flexibility(ground, k, w, width, average, offset)
+
+    with monkeypatch.context() as patch:
+        patch.setattr(layered, "strip_flexibility", counted)
+        ours = LayeredGround(SOFT, B, A, rails=1).surface_compliance(kx, omega, y)
+    with monkeypatch.context() as patch:
+        patch.setattr(strip, "radial_flexibility",
+                      lambda ground, k, w: strip.surface_flexibility(ground, k, w))
+        truth = strip.strip_flexibility(SOFT, kx, omega, B, False, y)
+    scale = np.max(np.abs(truth))
+    assert np.max(np.abs(ours - truth)) < 3e-7 * scale
+    if abs(y) > B / 2:
+        assert sum(asked) < 20
