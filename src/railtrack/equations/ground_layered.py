@@ -125,8 +125,9 @@ class LayeredGround:
         C_y(0, 0) = 0 as in `compliance`: a line's mean is measured from that
         line's own mean level along the track.  Beyond the strip
         (|y| > b/2) C_y falls like exp(-sqrt(k_x^2 - k_R^2) (|y| - b/2)), k_R
-        the slowest surface wave's wavenumber; where that is below e^-36 it
-        is returned as 0 without integrating.
+        the slowest surface wave's wavenumber (taken as omega / (0.8 min c_s),
+        above it, as in the strip's quadrature); where that is below e^-36
+        it is returned as 0 without integrating.
 
         Examples
         --------
