@@ -99,8 +99,17 @@ def lattice_sum(compliance, omega: float, q: float, spacing: float, footprint: f
 
 
 def lattice_sums(compliance, omega: np.ndarray, q: np.ndarray, spacing: float,
-                 footprint: float, terms: int = TERMS) -> tuple[np.ndarray, np.ndarray]:
+                 footprint: float, terms: int = TERMS,
+                 power: int = 2) -> tuple[np.ndarray, np.ndarray]:
     """`lattice_sum` for several (omega, q) at once, shapes (H,): one compliance call each.
+
+    ``power=1`` weighs C by one sinc(kappa_m a/2), not two: the displacement
+    at the point x = 0 rather than averaged over the footprint (the ground
+    beside the track, `railtrack.equations.ground_beside`).  The constant
+    C_inf is summed exactly as for two (sum_m sinc(kappa_m a/2) = L/a, the
+    footprint's pressure at its centre, for a < 2L); the A/|k| tail, whose
+    terms change sign with sin(kappa_m a/2), is left out (it is within one
+    term's size, O(M^-2)).
 
     Examples
     --------
@@ -111,6 +120,8 @@ def lattice_sums(compliance, omega: np.ndarray, q: np.ndarray, spacing: float,
     """
     if isinstance(terms, bool) or not isinstance(terms, (int, np.integer)) or terms < 4:
         raise ValueError(f"terms must be an integer >= 4; got {terms!r}")
+    if power not in (1, 2):
+        raise ValueError(f"power must be 1 (a point) or 2 (the footprint); got {power!r}")
     # S is 2 pi-periodic in q (relabel m): centre the window of kept wavenumbers on k = 0,
     # where C is largest, whatever the harmonic's phase q_n = 2 pi n L / H
     q = np.remainder(np.asarray(q, dtype=float) + np.pi, 2 * np.pi) - np.pi
@@ -128,14 +139,15 @@ def lattice_sums(compliance, omega: np.ndarray, q: np.ndarray, spacing: float,
                 f"{w:.6g} rad/s (a ground without a rigid base settles without bound "
                 "under the infinite train's mean load at kx = 0, omega = 0)")
         values[row] = returned
-    weights = np.sinc(kappa * footprint / (2 * np.pi)) ** 2        # np.sinc(x) = sin(pi x)/(pi x)
-    full = _corrected(kappa, values, weights, q, spacing, footprint, terms, terms)
-    half = _corrected(kappa, values, weights, q, spacing, footprint, terms, terms // 2)
+    weights = np.sinc(kappa * footprint / (2 * np.pi)) ** power   # np.sinc(x) = sin(pi x)/(pi x)
+    full = _corrected(kappa, values, weights, q, spacing, footprint, terms, terms, power)
+    half = _corrected(kappa, values, weights, q, spacing, footprint, terms, terms // 2, power)
     return full, np.abs(full - half)
 
 
-def _corrected(kappa, values, weights, q, spacing, a, terms, kept):
-    """The sum over |m| <= kept plus the far-field tail fitted on its two outermost terms."""
+def _corrected(kappa, values, weights, q, spacing, a, terms, kept, power=2):
+    """The sum over |m| <= kept plus the far-field tail fitted on its two outermost terms
+    (for ``power=1`` the constant's only)."""
     inside = slice(terms - kept, terms + kept + 1)
     kept_sum = np.sum(values[:, inside] * weights[:, inside], axis=-1) / spacing
     far, amplitude = [], []
@@ -146,7 +158,7 @@ def _corrected(kappa, values, weights, q, spacing, a, terms, kept):
         amplitude.append(slope)
     constant = 0.5 * (far[0] + far[1])
     tail = constant * (1 / a - np.sum(weights[:, inside], axis=-1) / spacing)
-    for side, slope in zip((1, -1), amplitude):
+    for side, slope in zip((1, -1), amplitude if power == 2 else ()):
         edge = np.abs(q + side * 2 * np.pi * (kept + 0.5)) / spacing
         tail = tail + slope / (2 * np.pi * a**2 * edge**2)
     return kept_sum + tail

@@ -38,7 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.ground import Ground
-from ..model.validation import require_positive
+from ..model.validation import require_finite, require_positive
 from .ground_strip import static_strip_flexibility, strip_flexibility
 
 __all__ = ["LayeredGround"]
@@ -114,44 +114,78 @@ class LayeredGround:
 
     def compliance(self, kx, omega: float) -> np.ndarray:
         """C(k_x, omega) [m^2/N] for wavenumbers k_x [rad/m] at one omega >= 0 [rad/s]."""
+        return self._compliance(kx, omega, self.average, 0.0)
+
+    def surface_compliance(self, kx, omega: float, offset: float) -> np.ndarray:
+        """C_y(k_x, omega) [m^2/N]: the surface on the line y = offset [m] from the centre line.
+
+        The strip's displacement at y (not averaged over its width) per unit
+        line load, times ``rails`` as in `compliance`: the kernel of the
+        displacement beside the track (`railtrack.equations.ground_beside`).
+        C_y(0, 0) = 0 as in `compliance`: a line's mean is measured from that
+        line's own mean level along the track.  Beyond the strip
+        (|y| > b/2) C_y falls like exp(-sqrt(k_x^2 - k_R^2) (|y| - b/2)), k_R
+        the slowest surface wave's wavenumber (taken as omega / (0.8 min c_s),
+        above it, as in the strip's quadrature); where that is below e^-36
+        it is returned as 0 without integrating.
+
+        Examples
+        --------
+        >>> soil = Ground.homogeneous(100.0, 0.3, 1800.0, 0.05)
+        >>> ground = LayeredGround(soil, width=2.5, footprint=0.25)
+        >>> near, far = ground.surface_compliance(np.array([1.0, 200.0]), 0.0, 4.0)
+        >>> bool(near.real > 0), complex(far)      # e^(-200 * 2.75): nothing
+        (True, 0j)
+        """
+        require_finite("offset", offset, "m")
+        return self._compliance(kx, omega, False, abs(float(offset)))
+
+    def _compliance(self, kx, omega, average, offset):
         kx = np.asarray(kx, dtype=float)
         omega = float(omega)
         values = np.zeros(kx.shape, dtype=complex)
         dynamic = (kx != 0) | (omega != 0)      # C(0, 0) = 0: the mean from the mean level
+        beyond = offset - 0.5 * self.width
+        if beyond > 0:                          # exp(-36) of the decay beside the strip
+            slow = omega / (0.8 * self.ground.slowest_shear_wave_speed)
+            dynamic &= np.abs(kx) < np.hypot(slow, 36.0 / beyond)
         if np.any(dynamic):
             # C is even in k_x: each |k_x| once
             wanted, back = np.unique(np.abs(kx[dynamic]), return_inverse=True)
-            values[dynamic] = self.rails * self._even(wanted, omega)[back]
+            values[dynamic] = self.rails * self._even(wanted, omega, average, offset)[back]
         return values
 
-    def _flexibility(self, kx, omega):
-        return strip_flexibility(self.ground, kx, omega, self.width, self.average)
+    def _flexibility(self, kx, omega, average, offset):
+        return strip_flexibility(self.ground, kx, omega, self.width, average, offset)
 
-    def _even(self, kx: np.ndarray, omega: float) -> np.ndarray:
+    def _even(self, kx: np.ndarray, omega: float, average: bool,
+              offset: float) -> np.ndarray:
         """C at sorted |k_x| >= 0: exact below K, interpolated beyond (the module's note)."""
         layers = self.ground.layers
         reach = max(2.0 * omega / (0.8 * self.ground.slowest_shear_wave_speed),
                     2.0 * np.pi / self.width, 8.0 / layers[0].thickness if layers else 0.0)
         far = kx > reach
         if np.count_nonzero(far) <= _NODES + 1:
-            return self._flexibility(kx, omega)
+            return self._flexibility(kx, omega, average, offset)
         u_end = reach / kx[-1]
         nodes = self._nodes(u_end, _NODES)
         check = 0.5 * (nodes[_NODES // 2] + nodes[_NODES // 2 + 1])
         near_values = self._flexibility(np.concatenate([kx[~far], reach / nodes,
-                                                        [reach / check]]), omega)
+                                                        [reach / check]]), omega, average, offset)
         exact_near, at_nodes, at_check = np.split(near_values,
                                                   [np.count_nonzero(~far), -1])
         def rest(k, value):
-            return (value - self._static(k, omega)) * k**3
+            return (value - self._static(k, omega, average, offset)) * k**3
         fit = np.polynomial.chebyshev.Chebyshev.fit(
             nodes, rest(reach / nodes, at_nodes), _NODES - 1, domain=[u_end, 1.0])
-        guess = fit(check) / (reach / check) ** 3 + self._static(reach / check, omega)
+        guess = fit(check) / (reach / check) ** 3 + self._static(reach / check, omega,
+                                                                 average, offset)
         if abs(guess - at_check[0]) > _CHECK * abs(at_check[0]):
-            return self._flexibility(kx, omega)
+            return self._flexibility(kx, omega, average, offset)
         out = np.empty(kx.size, dtype=complex)
         out[~far] = exact_near
-        out[far] = fit(reach / kx[far]) / kx[far] ** 3 + self._static(kx[far], omega)
+        out[far] = fit(reach / kx[far]) / kx[far] ** 3 + self._static(kx[far], omega, average,
+                                                                      offset)
         return out
 
     @staticmethod
@@ -160,5 +194,5 @@ class LayeredGround:
         x = np.cos(np.pi * (np.arange(count) + 0.5) / count)
         return start + (1.0 - start) * (x + 1.0) / 2.0
 
-    def _static(self, kx, omega):
-        return static_strip_flexibility(self.ground, kx, omega, self.width, self.average)
+    def _static(self, kx, omega, average, offset):
+        return static_strip_flexibility(self.ground, kx, omega, self.width, average, offset)

@@ -198,13 +198,18 @@ def strip_flexibility(ground: Ground, kx, omega, width: float,
             ground, kx, omega, static, x, width), static * _average_tail(x, kx, width))
     else:
         c = 2.0 * offset / width
-        closed = static * 0.5 * sum(np.sign(a) * iti0k0(abs(a) * sigma)[1]
-                                    for a in (1 + c, 1 - c)) / sigma
+        closed = static * _static_line(sigma, c)
         # sin(a k) cos(y k) = [sin((a + y) k) + sin((a - y) k)] / 2, each term by
         tail = sum(0.5 * np.sign(c) * _sine_tail(x * abs(c), kx * width / 2.0, abs(c))
                    for c in (1.0 + c, 1.0 - c))
         total += np.where(split, closed, static * tail)
     return (total / np.pi).reshape(shape_out)
+
+
+def _static_line(sigma, c):
+    """int_0^inf sinc(t) cos(c t) / sqrt(sigma^2 + t^2) dt, sigma = k_x b / 2 > 0, c = 2 y / b
+    (the module's note)."""
+    return 0.5 * sum(np.sign(a) * iti0k0(abs(a) * sigma)[1] for a in (1 + c, 1 - c)) / sigma
 
 
 def _static_average(sigma):
@@ -259,12 +264,13 @@ def strip_stiffness(ground: Ground, kx, omega, width: float,
 
 
 def static_strip_flexibility(ground: Ground, kx, omega, width: float,
-                             average: bool = False) -> np.ndarray:
+                             average: bool = False, offset: float = 0.0) -> np.ndarray:
     """The part of `strip_flexibility` from the top stratum's static F_inf = (1 - nu) / (mu* k).
 
     Closed form (the module's note), for k_x != 0 [rad/m]; omega [rad/s] enters
-    only through the hysteretic damping of mu*.  The rest, strip_flexibility
-    minus this, falls like k_x^-3 at short waves.
+    only through the hysteretic damping of mu*; ``offset`` y [m] as in
+    `strip_flexibility`.  The rest, strip_flexibility minus this, falls like
+    k_x^-3 at short waves.
 
     Examples
     --------
@@ -281,4 +287,4 @@ def static_strip_flexibility(ground: Ground, kx, omega, width: float,
     sigma = kx * width / 2.0
     if average:
         return static * _static_average(sigma) / np.pi
-    return static * iti0k0(sigma)[1] / sigma / np.pi
+    return static * _static_line(sigma, 2.0 * offset / width) / np.pi

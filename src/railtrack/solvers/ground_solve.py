@@ -165,7 +165,8 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
         coefficients=two_sided(d + u), method=method, converged=outcome.converged,
         iterations=iterations, residual_history=outcome.residual_history, message=message,
         samples=system.samples, truncation_error=estimate, ground=ground,
-        ground_coefficients=two_sided(u), relative_coefficients=two_sided(d))
+        ground_coefficients=two_sided(u), relative_coefficients=two_sided(d),
+        force_coefficients=two_sided(forces))
     if strict and not solution.converged:
         raise convergence_error(method, outcome, solution, message)
     if solution.converged:
