@@ -143,3 +143,17 @@ def test_bad_strips_are_refused_by_name():
         strip_stiffness(HALF, 1.0, 0.0, -3.0)
     with pytest.raises(ValueError, match="offset"):
         strip_flexibility(HALF, 1.0, 0.0, WIDTH, average=True, offset=2.0)
+
+
+def test_a_nearly_static_frequency_is_continuous_and_stays_cheap():
+    # as omega -> 0 the strip tends to the static strip of the damped moduli (hysteretic
+    # damping is complex at any omega != 0, real at 0: the limit is not omega = 0 itself);
+    # at 1e-6 rad/s the panel grid once grew to 7.5 million panels (the fine cap of the
+    # surface waves ran past them to the next point)
+    from railtrack.equations.ground_strip import _breakpoints
+    soil = Ground((SoilLayer(45.0, 0.49, 1300.0, 0.03, thickness=4.0),),
+                  SoilLayer(150.0, 0.45, 1800.0, 0.03))
+    for average in (False, True):
+        slow, slower = (strip_flexibility(soil, 1.0, w, 3.0, average) for w in (1e-3, 1e-6))
+        assert abs(slower / slow - 1) < 1e-6
+    assert _breakpoints(soil, 1.0, 1e-6, 3.0).size < 1000

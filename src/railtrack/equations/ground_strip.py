@@ -87,6 +87,10 @@ def _breakpoints(ground: Ground, kx: float, omega: float, width: float,
         points += list(np.sqrt(k[k > kx] ** 2 - kx * kx))
         near = 1.5 * np.sqrt(max(k_slow**2 - kx * kx, 0.0)) + 0.5 * k_fast
         cap_near = min(cap, _NEAR_CAP * k_fast)
+        # the fine cap ends at `near`: an interval from below it to far beyond (at small
+        # omega, when the next point is set by k_x) would otherwise be cut at the fine cap
+        # all the way (7.5 million panels at omega = 1e-6 rad/s)
+        points.append(near)
     scale = max(kx, 1e-6 / width)                            # the width of the peak at k_y = 0
     points += list(scale * 1e-2 * 1.5 ** np.arange(int(np.log(end / (scale * 1e-2))
                                                           / np.log(1.5)) + 1))
