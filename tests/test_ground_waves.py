@@ -110,3 +110,19 @@ def test_a_stiff_crust_keeps_its_long_waves_and_leaks_its_short_ones():
 def test_bad_wave_questions_are_refused_by_name(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_a_published_layered_profile_has_disbas_fundamental_rayleigh_speeds():
+    # an independent code's reference (disba, K. Luu, doi 10.5281/zenodo.3987395: its
+    # test/test_dispersion.py, after Herrmann's surf96): four strata of 0.5 km over a
+    # half-space, c_p = 1.0-1.4 km/s, c_s = c_p / 1.73, 2 g/cm^3; the fundamental Rayleigh
+    # mode's phase velocities at 20 periods from 1 to 10 s sum to 11.788 km/s (Dunkin's
+    # algorithm; its fast-delta variant gives 11.782, and disba's own test allows 1e-3)
+    p_speed = 1000.0 * (1.0 + 0.1 * np.arange(5))
+    ratio = 1.73**2
+    nu = (ratio - 2) / (2 * (ratio - 1))
+    strata = [SoilLayer(c / 1.73, nu, 2000.0, thickness=500.0) for c in p_speed]
+    ground = Ground(tuple(strata[:-1]), SoilLayer(p_speed[-1] / 1.73, nu, 2000.0))
+    periods = np.logspace(0.0, 1.0, 20)
+    speeds = fundamental_phase_speed(ground, 1.0 / periods, points=2000)
+    assert abs(speeds.sum() / 1e3 - 11.788) < 1e-3          # measured: 11.7878
