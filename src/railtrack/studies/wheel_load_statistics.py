@@ -18,7 +18,9 @@ quantiles at (1 -+ p) / 2), beside Q -+ 1, 2, 3 sigma (Q the static
 load), which bound the same fractions if P is normal (Eisenmann's reading,
 `railtrack.equations.eisenmann`).  Realisations that did not converge are
 counted in ``converged`` and left out of the pooled values, never dropped
-unseen.
+unseen; solves whose truncation estimate stays above the accuracy
+(``harmonics="auto"`` stopped at its cap, as where the wheels leave the
+rail) are kept, counted in ``truncation`` and warned about once.
 
 The ride over the smooth rail (one more solve) is kept too: on a sleepered
 track the wheel load varies as the wheels pass the sleepers even without
@@ -39,7 +41,8 @@ import numpy as np
 from ..model.random_profile import RandomProfile
 from ..model.vehicle import Vehicle
 from ..solvers.arguments import require_count
-from ..solvers.convergence import ConvergenceWarning
+from ..solvers.auto_harmonics import DEFAULT_ACCURACY
+from ..solvers.convergence import ConvergenceWarning, TruncationWarning
 from ..solvers.progress import progress_bar, show_progress
 from ..solvers.solve import solve
 
@@ -69,6 +72,9 @@ class WheelLoadStatistics:
     converged : ndarray of bool, shape (N,)
     harmonics : ndarray of int, shape (N,)
         m of each solve.
+    truncation : ndarray, shape (N,)
+        Each solve's estimated truncation error of the contact force, over Q
+        [-] (`WheelSolution.truncation_error`; NaN if not estimated).
     mean : ndarray, shape (4,)
         P_k pooled over time and the converged realisations [N].
     pooled_std : ndarray, shape (4,)
@@ -86,6 +92,7 @@ class WheelLoadStatistics:
     peak: np.ndarray
     converged: np.ndarray
     harmonics: np.ndarray
+    truncation: np.ndarray
     mean: np.ndarray
     pooled_std: np.ndarray
     lower: np.ndarray
@@ -179,6 +186,7 @@ def wheel_load_statistics(track, foundation, vehicle: Vehicle, spectrum, speed: 
     seeds = np.arange(first, first + count)
     std, peak = np.zeros((count, 4)), np.zeros((count, 4))
     converged, used = np.zeros(count, dtype=bool), np.zeros(count, dtype=int)
+    truncation = np.full(count, np.nan)
     pooled = []
 
     def ride(profile, tiles):
@@ -193,12 +201,14 @@ def wheel_load_statistics(track, foundation, vehicle: Vehicle, spectrum, speed: 
     smooth_std = forces.std(axis=1)
     with progress_bar(shown, count, "random rails", "rails") as bar, \
             warnings.catch_warnings():
-        # every failure is counted in `converged` and warned about once below
+        # every failure or truncation is counted and warned about once below
         warnings.simplefilter("ignore", ConvergenceWarning)
+        warnings.simplefilter("ignore", TruncationWarning)
         for i, value in enumerate(seeds):
             rail = RandomProfile(spectrum, wavelengths, period, int(value))
             found, forces = ride(rail, wagons)
             converged[i], used[i] = found.converged, found.harmonics
+            truncation[i] = found.truncation_error
             std[i], peak[i] = forces.std(axis=1), forces.max(axis=1)
             if found.converged:
                 pooled.append(forces)
@@ -209,6 +219,11 @@ def wheel_load_statistics(track, foundation, vehicle: Vehicle, spectrum, speed: 
         warnings.warn(f"{int(np.sum(~converged))} of {count} realisations did not converge; "
                       f"they are left out of the pooled values (see .converged)",
                       ConvergenceWarning, stacklevel=2)
+    coarse = int(np.sum(truncation > DEFAULT_ACCURACY))
+    if coarse:
+        warnings.warn(f"{coarse} of {count} realisations kept a truncation error above "
+                      f"{DEFAULT_ACCURACY:.1%} of Q (largest {np.nanmax(truncation):.1%}; see "
+                      f".truncation and .harmonics)", TruncationWarning, stacklevel=2)
     every = np.concatenate(pooled, axis=1)
     levels = np.asarray(LEVELS)
     lower = np.quantile(every, (1 - levels) / 2, axis=1)
@@ -216,5 +231,6 @@ def wheel_load_statistics(track, foundation, vehicle: Vehicle, spectrum, speed: 
     inputs = dict(track=track, foundation=foundation, vehicle=vehicle, spectrum=spectrum,
                   speed=float(speed), wagon_length=float(train.wagon_length),
                   wavelengths=tuple(wavelengths), wagons=wagons, samples=samples)
-    return WheelLoadStatistics(load, seeds, std, peak, converged, used, every.mean(axis=1),
-                               every.std(axis=1), lower, upper, smooth_std, inputs)
+    return WheelLoadStatistics(load, seeds, std, peak, converged, used, truncation,
+                               every.mean(axis=1), every.std(axis=1), lower, upper,
+                               smooth_std, inputs)
