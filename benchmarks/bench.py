@@ -2,7 +2,7 @@
 
 Run with ``make bench`` (all sections), or ``python benchmarks/bench.py
 stability`` for some of them (``targets``, ``solvers``, ``sweep``, ``stability``,
-``cells``, ``wheels``, ``ground``).  ``targets`` (benchmarks/targets.py) is issue 28's table:
+``cells``, ``wheels``, ``ground``, ``statistics``).  ``targets`` (benchmarks/targets.py) is issue 28's table:
 each target timed beside its reference in one run.
 Prints Markdown tables: the machine, the median wall time of each solve
 (median over several runs, each run timing a batch of repeated solves), and
@@ -28,6 +28,7 @@ import scipy
 import railtrack as rt
 from targets import print_targets   # benchmarks/targets.py, beside this file
 from bench_ground import bench_ground
+from bench_statistics import bench_statistics
 
 HARMONICS = 15
 CASES = {
@@ -293,7 +294,8 @@ def _timed(function) -> float:
 
 SECTIONS = {"targets": print_targets, "solvers": main, "sweep": bench_sweep,
             "stability": bench_stability,
-            "cells": bench_cells, "wheels": bench_wheels, "ground": bench_ground}
+            "cells": bench_cells, "wheels": bench_wheels, "ground": bench_ground,
+            "statistics": bench_statistics}
 
 
 if __name__ == "__main__":

@@ -29,6 +29,8 @@ AUTHORS = "the railtrack contributors"
 NO_DOI = {
     "hetenyi1946": "a 1946 book (University of Michigan Press); no DOI, and no "
                    "publisher page for this edition found",
+    "esveld2001": "a 2001 book (MRT-Productions, 2nd edition): no DOI; cited for "
+                  "Eisenmann's dynamic factor (railtrack.equations.eisenmann)",
 }
 # Works that very likely have a DOI or an open-archive copy which could not be
 # verified from the machine this list was written on (no network). The stored

@@ -30,7 +30,7 @@ from ..model.vehicle import Vehicle
 from .vehicle_matrices import WHEELSETS, static_wheelset_loads, vehicle_matrices
 
 __all__ = ["wheelset_dynamic_stiffness", "wheel_load_transfer", "rigid_track_ride",
-           "spectral_wheel_load_std"]
+           "spectral_wheel_load_std", "band_std"]
 
 
 def wheelset_dynamic_stiffness(vehicle: Vehicle, omega) -> np.ndarray:
@@ -84,14 +84,33 @@ def spectral_wheel_load_std(vehicle: Vehicle, spectrum, speed: float,
     >>> (sigma / 1e3).round(1).tolist()                            # kN, on 109 kN
     [19.7, 22.4, 19.7, 22.4]
     """
+    return band_std(lambda omega: wheel_load_transfer(vehicle, speed, omega), spectrum,
+                    wavelengths)
+
+
+def band_std(transfer, spectrum, wavelengths: tuple, period: float | None = None) -> np.ndarray:
+    """sqrt of the integral of |transfer(Omega)|^2 S(Omega) dOmega over the band [N].
+
+    ``period=None``: adaptive quadrature over 2 pi / lambda_max .. 2 pi / lambda_min.
+    A `period` [m]: the sum over its harmonics Omega_j = 2 pi j / period in the
+    band, times dOmega = 2 pi / period, the variance of a `RandomProfile` of that
+    period exactly (the midpoint rule of the integral).
+    """
     shortest, longest = (float(w) for w in wavelengths)
     if not 0.0 < shortest < longest:
         raise ValueError(f"wavelengths must satisfy 0 < lambda_min < lambda_max [m]; "
                          f"got {wavelengths!r}")
 
     def density(omega):
-        return np.abs(wheel_load_transfer(vehicle, speed, omega)) ** 2 * spectrum(omega)
+        return np.abs(transfer(omega)) ** 2 * np.asarray(spectrum(omega))[..., None]
 
+    if period is not None:
+        period = float(period)
+        j = np.arange(int(np.ceil(period / longest - 1e-9)),
+                      int(np.floor(period / shortest + 1e-9)) + 1)
+        omega = 2 * np.pi * j[j >= 1] / period
+        step = 2 * np.pi / period
+        return np.sqrt(step * np.sum(density(omega), axis=0))
     variance, _ = quad_vec(density, 2 * np.pi / longest, 2 * np.pi / shortest,
                            epsrel=1e-10, limit=400)
     return np.sqrt(variance)
