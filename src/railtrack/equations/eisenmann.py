@@ -16,9 +16,10 @@ and the load not exceeded with the probability of the interval Q -+ t sigma,
 The factors t and n are checked against Balmaseda et al., "360.revista de
 Alta Velocidad" no. 5, p. 302 (the page found by the project's search,
 https://tecnica-vialibre.es/360rav/revistas/360AV05online/files/basic-html/page304.html);
-the speed factor phi is as Esveld's book is quoted in issue 32, not read by
-us in a source.  It is a regression on measured loads: an order of
-magnitude beside a model, not a check of it.
+the speed factor phi is the form the project's maintainers recall from
+Esveld's book: no source we could read states it, so it is unchecked.  It
+is a regression on measured loads: an order of magnitude beside a model,
+not a check of it.
 """
 
 from __future__ import annotations
