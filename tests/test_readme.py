@@ -50,7 +50,8 @@ def test_each_python_block_runs(line, code, tmp_path, monkeypatch):
                                   "TimoshenkoRail", "p2_force", "floquet", "check_branch",
                                   "random_support", "continuation", "sweep", "progress",
                                   "PlausibilityWarning", "pint", "summary()", "to_xarray()",
-                                  "to_netcdf", "make venv"])
+                                  "to_netcdf", "make venv", "LayeredGround",
+                                  "surface_displacement", "wheel_load_statistics"])
 def test_the_readme_names_each_capability(name):
     assert name in README
 
