@@ -434,6 +434,16 @@ ANSWERS = {
         ("(b): the product at 200 m/s", r"200 m/s: .*product \+(\d+)%", "%", 0.5,
          r"product|overload"),
     ],
+    "17.4": [
+        ("(a): the sum over one coach at 30 m/s", r"30 m/s: one coach ([\d.]+)", "bare", 0.0005,
+         r"one coach|sum"),
+        ("(a): the integral at 30 m/s", r"30 m/s: one coach [\d.]+, integral ([\d.]+)", "bare",
+         0.0005, r"integral"),
+        ("(a): the integral at 45 m/s", r"45 m/s: one coach [\d.]+, integral ([\d.]+)", "bare",
+         0.0005, r"integral"),
+        ("(b): the sum over eight coaches at 30 m/s", r"8 coaches ([\d.]+)", "bare", 0.0005,
+         r"8 coaches|eight"),
+    ],
     "18.1": [
         ("paper's track: steps to 0.1 %",
          r"paper's track:[\s\S]*?library, k = (\d+): mean 0\.0\d+ % short", "steps", 0),
