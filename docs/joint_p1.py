@@ -4,6 +4,7 @@ Issue 32, item 5.  From the repository root, with PYTHONPATH=src:
 
     python docs/joint_p1.py hb 300 600 1200 2400   # rt.solve at these m
     python docs/joint_p1.py ring 8:3600 16:7200    # elements:steps
+    python docs/joint_p1.py ring 4:7200:1e-3       # ...:tol
 
 One case: the ballasted track and foundation, the paper's train at 30 m/s, a
 600 kg wheel on the Hertz spring, a DippedJoint of 10 mrad over 1 m in the
@@ -43,15 +44,15 @@ def harmonic_balance(m: int) -> None:
           f"min {p.min() / 1e3:6.2f} kN  conv={s.converged}", flush=True)
 
 
-def ring(elements: int, steps: int) -> None:
+def ring(elements: int, steps: int, tol: float = 1e-5) -> None:
     track, train, law, wheel, joint = case()
     start = time.perf_counter()
     r = rt.simulate_time_domain(
         track, train, law, elements, steps, wheel=wheel, profile=joint,
-        tol=1e-5, warn_step_error=None)
+        tol=tol, warn_step_error=None)
     seconds = time.perf_counter() - start
     p = r.contact_forces
-    print(f"ring {elements}:{steps} {seconds:7.1f} s  "
+    print(f"ring {elements}:{steps}:{tol:g} {seconds:7.1f} s  "
           f"P1 {p.max() / 1e3:7.2f} kN  min {p.min() / 1e3:6.2f} kN  "
           f"conv={r.converged}", flush=True)
 
@@ -62,4 +63,5 @@ if __name__ == "__main__":
         if kind == "hb":
             harmonic_balance(int(run))
         else:
-            ring(*map(int, run.split(":")))
+            elements, steps, *tol = run.split(":")
+            ring(int(elements), int(steps), *map(float, tol))

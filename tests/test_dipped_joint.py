@@ -98,3 +98,29 @@ def test_truncation_estimate_bounds_what_doubling_m_changes_in_p1():
     # doubling m within the estimate made at the smaller m
     assert peaks[1] > 1.5 * 75e3
     assert abs(peaks[1] - peaks[0]) < estimates[0]
+
+
+def test_harmonic_balance_p1_agrees_with_the_ring_within_their_errors():
+    # Two methods: the ring (finite elements, Newmark; its P1 error is what
+    # halving dt changes) and harmonic balance at m = 1200 (its error is its
+    # own truncation estimate).  docs/joint_p1.md has both converged.
+    track, law = rt.Track.ballasted(), rt.LinearFoundation.ballasted()
+    train, wheel = rt.Train.paper(speed=30.0), rt.Wheel(600.0)
+    joint = rt.DippedJoint(ANGLE, LENGTH, PERIOD, centre=CENTRE)
+    ring = []
+    for steps in (7200, 14400):  # dt = 83 and 42 us; P1 rises in ~0.3 ms
+        r = rt.simulate_time_domain(
+            track, train, law, 4, steps, wheel=wheel, profile=joint,
+            tol=1e-3, warn_step_error=None)
+        assert r.converged
+        ring.append(float(r.contact_forces.max()))
+    ring_error = abs(ring[1] - ring[0])
+    assert ring_error < 0.01 * ring[1]
+    m = 1200
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the truncation warning itself
+        s = rt.solve(track, train, law, m, wheel=wheel, profile=joint)
+    t = np.arange(16 * m) * s.period / (16 * m)
+    p1 = float(s.contact_force(t).max())
+    q = float(s.contact_force(t).mean())
+    assert abs(p1 - ring[1]) < s.truncation_error * q + ring_error
