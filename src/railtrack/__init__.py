@@ -68,7 +68,7 @@ from .solvers.cell_solution import CellSolution
 from .studies.random_support import RandomSupport, random_support
 from .model.wheel import Wheel
 from .model.vehicle import Vehicle
-from .model.profile import CosineDip
+from .model.profile import CosineDip, DippedJoint
 from .solvers.wheel_solution import WheelSolution
 from .model.timoshenko import TimoshenkoRail
 from .studies.p2_force import EquivalentTrack, equivalent_track, p2_force
@@ -114,6 +114,7 @@ __all__ = [
     "Wheel",
     "Vehicle",
     "CosineDip",
+    "DippedJoint",
     "WheelSolution",
     "TimoshenkoRail",
     "p2_force",

@@ -48,6 +48,8 @@ FIELDS: dict[str, dict[str, tuple[str, str | None]]] = {
                   primary_damping=("N s/m", "primary_damping")),
     "CosineDip": dict(depth=("m", "dip_depth"), length=("m", "dip_length"),
                       period=("m", None), centre=("m", None)),
+    "DippedJoint": dict(angle=("rad", "dip_angle"), length=("m", "dip_length"),
+                        period=("m", None), centre=("m", None)),
     "Vehicle": dict(body_mass=("kg", None), body_pitch_inertia=("kg m^2", None),
                     bogie_mass=("kg", None), bogie_pitch_inertia=("kg m^2", None),
                     wheelset_mass=("kg", None), secondary_stiffness=("N/m", None),

@@ -1,4 +1,4 @@
-"""Rail-top profiles r(x) fixed on the track: a dipped weld or joint (issue 20).
+"""Rail-top profiles r(x) fixed on the track: a dipped weld or joint (issues 20, 32).
 
 A profile is any callable ``r(x)`` [m] of the position along the track x [m],
 positive upward (a dip is negative), vectorised over numpy arrays.  For the
@@ -15,7 +15,7 @@ import numpy as np
 from .plausibility_check import check_plausible, quantities_to_si
 from .validation import as_float64, require_finite, require_non_negative, require_positive
 
-__all__ = ["CosineDip", "smooth_rail"]
+__all__ = ["CosineDip", "DippedJoint", "smooth_rail"]
 
 
 def smooth_rail(x) -> np.ndarray:
@@ -81,3 +81,77 @@ class CosineDip:
         inside = np.abs(s) < 0.5 * self.length
         return np.where(inside, np.pi * self.depth / self.length
                         * np.sin(2 * np.pi * s / self.length), 0.0)
+
+
+@dataclass(frozen=True)
+class DippedJoint:
+    """A V-shaped dipped joint of total dip angle `angle` ramping over `length`.
+
+        r(x) = -(angle/2) (length/2 - |s|)   for |s| < length/2,   else 0,
+
+    s the distance from the nearest joint ``centre + k period``.  Two
+    straight ramps meet at the joint: the rail runs down at slope
+    -alpha = -angle/2 and up at +alpha, so its slope jumps by 2 alpha =
+    `angle` (the engineer's dip angle) at the joint and by alpha at both
+    ends of the ramps, where it meets the level rail.  The depth at the joint
+    is angle length / 4.  Its corners are what excite the P1 force.
+
+    Parameters
+    ----------
+    angle : float
+        2 alpha >= 0, the total change of rail slope at the joint [rad].
+    length : float
+        > 0 [m], < period: the dip's length, from one end of its ramps to
+        the other.
+    period : float
+        > 0 [m], the distance between joints (for a steady state, a whole
+        number of sleeper spacings, e.g. the wagon length).
+    centre : float
+        [m], position of one joint (finite).
+
+    Examples
+    --------
+    >>> joint = DippedJoint(10e-3, 1.0, 18.0, centre=9.0)
+    >>> joint.depth * 1e3
+    2.5
+    >>> joint(np.array([9.0, 9.25, 9.5, 27.0])) * 1e3
+    array([-2.5 , -1.25,  0.  , -2.5 ])
+    >>> joint.slope(np.array([8.75, 9.25, 10.0])) * 1e3
+    array([-5.,  5.,  0.])
+    """
+
+    angle: float
+    length: float
+    period: float
+    centre: float = 0.0
+
+    def __post_init__(self) -> None:
+        quantities_to_si(self)
+        require_non_negative("angle", self.angle, "rad")
+        require_positive("length", self.length, "m")
+        require_positive("period", self.period, "m")
+        require_finite("centre", self.centre, "m")
+        if self.length >= self.period:
+            raise ValueError(f"a joint's dip length ({self.length} m) must be shorter than its "
+                             f"period ({self.period} m)")
+        as_float64(self)
+        check_plausible(self)
+
+    @property
+    def depth(self) -> float:
+        """The dip's depth at the joint, angle length / 4 [m]."""
+        return 0.25 * self.angle * self.length
+
+    def _offset(self, x) -> np.ndarray:
+        s = np.asarray(x, dtype=float) - self.centre
+        return s - self.period * np.round(s / self.period)
+
+    def __call__(self, x) -> np.ndarray:
+        s = self._offset(x)
+        return 0.5 * self.angle * np.minimum(np.abs(s) - 0.5 * self.length, 0.0)
+
+    def slope(self, x) -> np.ndarray:
+        """dr/dx [-]: -angle/2 on the way down, +angle/2 up, 0 at the joint itself."""
+        s = self._offset(x)
+        inside = np.abs(s) < 0.5 * self.length
+        return np.where(inside, 0.5 * self.angle * np.sign(s), 0.0)
