@@ -23,6 +23,26 @@ def smooth_rail(x) -> np.ndarray:
     return np.zeros(np.shape(x))
 
 
+def _validate(dip, size: str, unit: str, what: str) -> None:
+    """The checks a periodic dip shares: SI, sizes, its length inside its period, plausibility."""
+    quantities_to_si(dip)
+    require_non_negative(size, getattr(dip, size), unit)
+    require_positive("length", dip.length, "m")
+    require_positive("period", dip.period, "m")
+    require_finite("centre", dip.centre, "m")
+    if dip.length >= dip.period:
+        raise ValueError(f"{what} ({dip.length} m) must be shorter than its "
+                         f"period ({dip.period} m)")
+    as_float64(dip)
+    check_plausible(dip)
+
+
+def _from_nearest(dip, x) -> np.ndarray:
+    """s: the signed distance of x [m] from the nearest centre + k period."""
+    s = np.asarray(x, dtype=float) - dip.centre
+    return s - dip.period * np.round(s / dip.period)
+
+
 @dataclass(frozen=True)
 class CosineDip:
     """A dip of `depth` and `length`, centred at `centre`, repeating every `period`.
@@ -56,28 +76,17 @@ class CosineDip:
     centre: float = 0.0
 
     def __post_init__(self) -> None:
-        quantities_to_si(self)
-        require_non_negative("depth", self.depth, "m")
-        require_positive("length", self.length, "m")
-        require_positive("period", self.period, "m")
-        require_finite("centre", self.centre, "m")
-        if self.length >= self.period:
-            raise ValueError(f"a dip's length ({self.length} m) must be shorter than its "
-                             f"period ({self.period} m)")
-        as_float64(self)
-        check_plausible(self)
+        _validate(self, "depth", "m", "a dip's length")
 
     def __call__(self, x) -> np.ndarray:
-        s = np.asarray(x, dtype=float) - self.centre
-        s = s - self.period * np.round(s / self.period)
+        s = _from_nearest(self, x)
         inside = np.abs(s) < 0.5 * self.length
         return np.where(inside, -0.5 * self.depth * (1.0 + np.cos(2 * np.pi * s / self.length)),
                         0.0)
 
     def slope(self, x) -> np.ndarray:
         """dr/dx [-]."""
-        s = np.asarray(x, dtype=float) - self.centre
-        s = s - self.period * np.round(s / self.period)
+        s = _from_nearest(self, x)
         inside = np.abs(s) < 0.5 * self.length
         return np.where(inside, np.pi * self.depth / self.length
                         * np.sin(2 * np.pi * s / self.length), 0.0)
@@ -126,32 +135,19 @@ class DippedJoint:
     centre: float = 0.0
 
     def __post_init__(self) -> None:
-        quantities_to_si(self)
-        require_non_negative("angle", self.angle, "rad")
-        require_positive("length", self.length, "m")
-        require_positive("period", self.period, "m")
-        require_finite("centre", self.centre, "m")
-        if self.length >= self.period:
-            raise ValueError(f"a joint's dip length ({self.length} m) must be shorter than its "
-                             f"period ({self.period} m)")
-        as_float64(self)
-        check_plausible(self)
+        _validate(self, "angle", "rad", "a joint's dip length")
 
     @property
     def depth(self) -> float:
         """The dip's depth at the joint, angle length / 4 [m]."""
         return 0.25 * self.angle * self.length
 
-    def _offset(self, x) -> np.ndarray:
-        s = np.asarray(x, dtype=float) - self.centre
-        return s - self.period * np.round(s / self.period)
-
     def __call__(self, x) -> np.ndarray:
-        s = self._offset(x)
+        s = _from_nearest(self, x)
         return 0.5 * self.angle * np.minimum(np.abs(s) - 0.5 * self.length, 0.0)
 
     def slope(self, x) -> np.ndarray:
         """dr/dx [-]: -angle/2 on the way down, +angle/2 up, 0 at the joint itself."""
-        s = self._offset(x)
+        s = _from_nearest(self, x)
         inside = np.abs(s) < 0.5 * self.length
         return np.where(inside, 0.5 * self.angle * np.sign(s), 0.0)
