@@ -43,11 +43,13 @@ def test_bad_arguments_are_named():
 
 
 def _thin_layer(h):
-    layer = SoilLayer(100.0, 0.3, 1900.0, thickness=h)
+    with rt.plausibility("ignore"):      # a layer of cm on a base 100 times as dense: meant
+        layer = SoilLayer(100.0, 0.3, 1900.0, thickness=h)
+        base = SoilLayer(1000.0, 0.3, 190000.0, 0.05)
     # a half-space 100 times as stiff in shear and 100 times as dense (mu 1e4 times the
     # layer's): its own compliance ~ 1 / (mu_hs k_x) stays below 1e-3 of the layer's h / M
     # at the k_x that carry the sum; only it is damped (the strip's quadrature needs a loss)
-    return layer, Ground((layer,), SoilLayer(1000.0, 0.3, 190000.0, 0.05))
+    return layer, Ground((layer,), base)
 
 
 def test_a_thin_layer_on_a_rigid_base_tends_to_the_winkler_compliance():

@@ -26,6 +26,8 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 
+from .plausibility_check import check_plausible, quantities_to_si
+
 __all__ = ["GroundCompliance", "WinklerGround", "check_ground"]
 
 
@@ -68,6 +70,7 @@ class WinklerGround:
     damping: float = 0.0
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         for name, value, low in (("modulus", self.modulus, "> 0"),
                                  ("footprint", self.footprint, "> 0"),
                                  ("damping", self.damping, ">= 0")):
@@ -77,6 +80,7 @@ class WinklerGround:
             bad = value < 0 if low == ">= 0" else value <= 0
             if not np.isfinite(value) or bad:
                 raise ValueError(f"{name} must be finite and {low}; got {value!r}")
+        check_plausible(self)       # a footprint in mm: PlausibilityWarning
 
     def compliance(self, kx, omega):
         kx = np.asarray(kx, dtype=float)
