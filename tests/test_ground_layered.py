@@ -42,6 +42,20 @@ def test_bad_arguments_are_named():
                  ground=LayeredGround(soil, B, 0.7))         # a > L = 0.6 m
 
 
+@pytest.mark.parametrize("raw", ["ground", "halfspace"])
+def test_the_soil_itself_passed_as_ground_is_told_to_wrap_it(raw):
+    # rt.Ground (or one SoilLayer) has no sleepers to load it: the message names
+    # the wrapper, and the wrapped soil that the message proposes then solves
+    soil = Ground.homogeneous(100.0, 0.3, 1800.0, 0.05)
+    given = soil if raw == "ground" else soil.halfspace
+    with pytest.raises(TypeError, match=r"wrap the (Ground|SoilLayer) soil in "
+                                        r"rt\.LayeredGround\(") as info:
+        rt.solve(TRACK, TRAIN, rt.LinearFoundation(1e8), harmonics=2, ground=given)
+    proposal = str(info.value).split("in rt.LayeredGround(", 1)[1].split("), width [m]")[0]
+    wrapped = eval(f"rt.LayeredGround({proposal})", {"rt": rt, "soil": given})
+    assert wrapped.ground == soil and (wrapped.width, wrapped.footprint) == (2.6, 0.25)
+
+
 def _thin_layer(h):
     with rt.plausibility("ignore"):      # a layer of cm on a base 100 times as dense: meant
         layer = SoilLayer(100.0, 0.3, 1900.0, thickness=h)
