@@ -11,9 +11,11 @@ range's factor of ten nothing is said: studies past service speeds or with
 unusual tracks stay quiet.
 
 What cannot be caught: a slip by less than ten.  A speed typed in km/h is
-3.6 times too large (160 "m/s" for 160 km/h is a plausible speed), a load in
-kilogram-force 9.81 times too small, a mass per axle instead of per wheel
-twice too large.  State the unit instead: pass a pint Quantity
+3.6 times too large (160 "m/s" for 160 km/h is a plausible speed; only
+`railtrack.studies.wheel_load_statistics`, a study of trains in service,
+warns above their 350 km/h), a load in kilogram-force 9.81 times too small,
+a mass per axle instead of per wheel twice too large.  State the unit
+instead: pass a pint Quantity
 (``220 * ureg("MN/m")``), which is converted to SI at the boundary.
 
 Sources are cited by the keys of the book's bibliography (book/references.bib)
