@@ -224,8 +224,7 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "surface alluvium 5-20 m in type E); the book's chapter 16: 4-6 m, and 500 m strata "
         "of a wave-speed test"),
     PlausibleRange(
-        "strip_width", "m", 1.5, 5.0, "strips under the track (sleeper length or ballast base) "
-        "are",
+        "strip_width", "m", 1.5, 5.0, "loaded strips across the track are",
         "sleepers 2.3-2.8 m long: 2.6 m for standard-gauge concrete monoblocks and timber, "
         "2.59 m (8.5 ft) ties in North America (Esveld 2001 [esveld2001], as commonly "
         "quoted), shorter for metre gauge; wider at the ballast's base; the book's chapter "
