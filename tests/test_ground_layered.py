@@ -45,7 +45,7 @@ def test_bad_arguments_are_named():
 @pytest.mark.parametrize("raw", ["ground", "halfspace"])
 def test_the_soil_itself_passed_as_ground_is_told_to_wrap_it(raw):
     # rt.Ground (or one SoilLayer) has no sleepers to load it: the message names
-    # the wrapper, and the wrapped soil that the message proposes then solves
+    # the wrapper, and the call it proposes builds the wrapped soil
     soil = Ground.homogeneous(100.0, 0.3, 1800.0, 0.05)
     given = soil if raw == "ground" else soil.halfspace
     with pytest.raises(TypeError, match=r"wrap the (Ground|SoilLayer) soil in "

@@ -63,7 +63,7 @@ SERVICE_SPEED = 350.0 / 3.6
 A faster speed warns `PlausibilityWarning` before any solve: 160 typed
 for 160 km/h is 160 m/s, near the 159.7 m/s world record [tgvrecord2007].
 On the README's example (ballasted track, FRA class 4) at 160 m/s the
-wheels leave the rail and the first realisation fails after 72 s (on a
+wheels leave the rail and the first realisation fails after 72-196 s (on a
 shared 2-core machine; 0.3 s at 45 m/s).  A first realisation that fails
 is warned about at once (`ConvergenceWarning`), before the others run.
 """
