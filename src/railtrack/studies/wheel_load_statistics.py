@@ -228,7 +228,8 @@ def wheel_load_statistics(track, foundation, vehicle: Vehicle, spectrum, speed: 
                 warnings.simplefilter("ignore", TruncationWarning)
                 found, forces = ride(rail, wagons)
             if i == 0 and not found.converged and count > 1:     # say so before the rest
-                _first_failed(found, forces, time.perf_counter() - start, count, speed)
+                _first_failed(found, forces, time.perf_counter() - start, count,
+                              float(train.speed))
             converged[i], used[i] = found.converged, found.harmonics
             truncation[i] = found.truncation_error
             std[i], peak[i] = forces.std(axis=1), forces.max(axis=1)
