@@ -52,3 +52,18 @@ def test_an_undamped_pad_dissipates_nothing():
     solution = rt.solve(track.replace(pad_damping=1e-9), train, law)
     spent = rt.dissipation(solution)
     assert abs(spent.pad) < 1e-12 * spent.foundation
+
+
+def test_help_of_dissipation_lists_every_field_of_its_result():
+    # help(rt.dissipation) is where a user looks for .ground and .total
+    import dataclasses
+    import pydoc
+
+    shown = pydoc.render_doc(rt.dissipation, renderer=pydoc.plaintext)
+    returns = shown.split("Returns", 1)[1].split("Examples", 1)[0]
+    fields = [f.name for f in dataclasses.fields(rt.Dissipation)]
+    properties = [name for name, value in vars(rt.Dissipation).items()
+                  if isinstance(value, property)]
+    assert {"ground", "total"} <= set(fields + properties)
+    for name in fields + properties:
+        assert f"``.{name}``" in returns, name

@@ -42,12 +42,28 @@ def test_bad_arguments_are_named():
                  ground=LayeredGround(soil, B, 0.7))         # a > L = 0.6 m
 
 
+@pytest.mark.parametrize("raw", ["ground", "halfspace"])
+def test_the_soil_itself_passed_as_ground_is_told_to_wrap_it(raw):
+    # rt.Ground (or one SoilLayer) has no sleepers to load it: the message names
+    # the wrapper, and the call it proposes builds the wrapped soil
+    soil = Ground.homogeneous(100.0, 0.3, 1800.0, 0.05)
+    given = soil if raw == "ground" else soil.halfspace
+    with pytest.raises(TypeError, match=r"wrap the (Ground|SoilLayer) soil in "
+                                        r"rt\.LayeredGround\(") as info:
+        rt.solve(TRACK, TRAIN, rt.LinearFoundation(1e8), harmonics=2, ground=given)
+    proposal = str(info.value).split("in rt.LayeredGround(", 1)[1].split("), width [m]")[0]
+    wrapped = eval(f"rt.LayeredGround({proposal})", {"rt": rt, "soil": given})
+    assert wrapped.ground == soil and (wrapped.width, wrapped.footprint) == (2.6, 0.25)
+
+
 def _thin_layer(h):
-    layer = SoilLayer(100.0, 0.3, 1900.0, thickness=h)
+    with rt.plausibility("ignore"):      # a layer of cm on a base 100 times as dense: meant
+        layer = SoilLayer(100.0, 0.3, 1900.0, thickness=h)
+        base = SoilLayer(1000.0, 0.3, 190000.0, 0.05)
     # a half-space 100 times as stiff in shear and 100 times as dense (mu 1e4 times the
     # layer's): its own compliance ~ 1 / (mu_hs k_x) stays below 1e-3 of the layer's h / M
     # at the k_x that carry the sum; only it is damped (the strip's quadrature needs a loss)
-    return layer, Ground((layer,), SoilLayer(1000.0, 0.3, 190000.0, 0.05))
+    return layer, Ground((layer,), base)
 
 
 def test_a_thin_layer_on_a_rigid_base_tends_to_the_winkler_compliance():

@@ -21,12 +21,16 @@ import numpy as np
 import pytest
 
 import railtrack as rt
+from railtrack.equations.ground_trapped import with_damping
+from railtrack.equations.ground_waves import fundamental_phase_speed
+from railtrack.model.ground import Ground, SoilLayer
 from railtrack.model.plausibility import PLAUSIBLE_RANGES, RANGES
 from railtrack.model.train import STANDARD_GRAVITY
 from railtrack.solvers.guards import LARGEST_DISPLACEMENT
 from railtrack.studies.p2_force import dip_angle
 
 BRITISH = rt.EquivalentTrack.british()
+HALF = Ground.homogeneous(100.0, 0.3, 1800.0, 0.05)
 
 
 def _p2(angle):
@@ -67,6 +71,32 @@ SLIPS = {
                               "MN?", lambda: rt.TimoshenkoRail(248.5 * 1e6, 0.24)),
     "P2 dip angle in mrad": (lambda: _p2(3.14), "dip_angle", "mrad?",
                              lambda: _p2(3.14 * 1e-3)),
+    # the ground (issue 40): the width slip made rt.solve run > 300 s in silence
+    "strip width in mm": (lambda: rt.LayeredGround(HALF, width=2600, footprint=0.28), "width",
+                          "mm?", lambda: rt.LayeredGround(HALF, width=2600 * 1e-3,
+                                                          footprint=0.28)),
+    "footprint in mm": (lambda: rt.LayeredGround(HALF, 2.6, 280.0), "footprint", "mm?",
+                        lambda: rt.LayeredGround(HALF, 2.6, 280.0 * 1e-3)),
+    "Winkler footprint in mm": (lambda: rt.WinklerGround(1e8, 250.0), "footprint", "mm?",
+                                lambda: rt.WinklerGround(1e8, 250.0 * 1e-3)),
+    "shear-wave speed in km/s": (lambda: SoilLayer(0.04, 0.49, 1300.0), "shear_wave_speed",
+                                 "km/s?", lambda: SoilLayer(0.04 * 1e3, 0.49, 1300.0)),
+    "half-space's c_s in km/s": (lambda: Ground.homogeneous(0.2, 0.3, 1800.0),
+                                 "shear_wave_speed", "km/s?",
+                                 lambda: Ground.homogeneous(0.2 * 1e3, 0.3, 1800.0)),
+    "layer thickness in mm": (lambda: SoilLayer(45.0, 0.49, 1300.0, 0.03, thickness=3000.0),
+                              "thickness", "mm?",
+                              lambda: SoilLayer(45.0, 0.49, 1300.0, 0.03, thickness=3.0)),
+    "density in g/cm^3": (lambda: SoilLayer(100.0, 0.3, 1.8), "density", "g/cm^3?",
+                          lambda: SoilLayer(100.0, 0.3, 1.8 * 1e3)),
+    "unit weight for density": (lambda: SoilLayer(100.0, 0.3, 18.0), "density", "kN/m^3?",
+                                lambda: SoilLayer(100.0, 0.3, 18.0 * 1e3 / 9.81)),
+    "damping ratio a decade off": (lambda: SoilLayer(100.0, 0.3, 1800.0, 0.0003),
+                                   "damping_ratio", "decimal point?",
+                                   lambda: SoilLayer(100.0, 0.3, 1800.0, 0.003 * 10)),
+    "Poisson's ratio a decade off": (lambda: SoilLayer(100.0, 0.003, 1800.0),
+                                     "poisson_ratio", "decimal point?",
+                                     lambda: SoilLayer(100.0, 0.3, 1800.0)),
 }
 
 
@@ -215,8 +245,25 @@ def _book_parameter_sets():
         rt.equivalent_track(ballasted, rt.LinearFoundation.ballasted()),
         rt.p2_force(75e3, dip_angle(dip), np.array([20.0, 45.0, 90.0]), 600.0,
                     BRITISH.mass, BRITISH.stiffness, BRITISH.damping),
+        # chapter 16 and the README: the ground, its strip, its strata and dampings
+        *_chapter_16_grounds(),
     ]
     return built
+
+
+def _chapter_16_grounds():
+    soft = Ground((SoilLayer(45.0, 0.49, 1300.0, 0.03, thickness=4.0),
+                   SoilLayer(70.0, 0.49, 1500.0, 0.03, thickness=6.0)),
+                  SoilLayer(150.0, 0.45, 1800.0, 0.03))
+    nu = (1.73**2 - 2) / (2 * (1.73**2 - 1))             # the wave-speed test's strata
+    c_p = 1000.0 * (1.0 + 0.1 * np.arange(5))
+    test = Ground(tuple(SoilLayer(c / 1.73, nu, 2000.0, thickness=500.0) for c in c_p[:-1]),
+                  SoilLayer(c_p[-1] / 1.73, nu, 2000.0))
+    clay = Ground((SoilLayer(65.0, 0.49, 1500.0, 0.02, thickness=6.0),),
+                  SoilLayer(200.0, 0.45, 1900.0, 0.02))
+    return [soft, test, clay, Ground.homogeneous(100.0, 0.25, 1800.0),
+            *(rt.LayeredGround(with_damping(soft, xi), width=3.0, footprint=0.25)
+              for xi in (0.015, 0.03, 0.06)), rt.WinklerGround(2e8, 0.25)]
 
 
 def test_the_books_parameter_sets_are_plausible():
@@ -298,3 +345,20 @@ def test_importing_railtrack_does_not_import_pint():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == "False"
+
+
+def test_the_librarys_own_rebuilds_of_a_soil_do_not_warn_again():
+    # A soil far from real ground, meant (a 1 cm layer of 11 kg/m^3, a Winkler
+    # limit), is said once at its construction; the undamped copy the wave
+    # solver makes of it is not a second input of the user's.
+    with rt.plausibility("ignore"):
+        light = Ground((SoilLayer(300.0, 0.3, 11.0, 0.02, thickness=0.01),),
+                       SoilLayer(5000.0, 0.25, 2500.0, 0.02))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", rt.PlausibilityWarning)
+        speed = fundamental_phase_speed(light, [2.0])
+        undamped = light.with_damping(0.0)
+    assert undamped.layers[0].density == 11.0 and undamped.strata[1].damping_ratio == 0.0
+    assert 0 < speed[0] < 5000.0                      # below the half-space's c_s
+    with pytest.warns(rt.PlausibilityWarning, match=r"Ground\.damping_ratio = 0\.0001"):
+        light.with_damping(1e-4)                      # a new xi is the user's, and checked

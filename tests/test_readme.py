@@ -9,12 +9,15 @@ which is optional) or names that other work delivers; the reason follows
 says where one is expected.
 """
 
+import inspect
 import re
 import subprocess
 import warnings
 from pathlib import Path
 
 import pytest
+
+import railtrack as rt
 
 ROOT = Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text(encoding="utf-8")
@@ -51,9 +54,30 @@ def test_each_python_block_runs(line, code, tmp_path, monkeypatch):
                                   "random_support", "continuation", "sweep", "progress",
                                   "PlausibilityWarning", "pint", "summary()", "to_xarray()",
                                   "to_netcdf", "make venv", "LayeredGround",
-                                  "surface_displacement", "wheel_load_statistics"])
+                                  "surface_displacement", "wheel_load_statistics",
+                                  "DippedJoint", "hanging_cell", "neighbour_rise"])
 def test_the_readme_names_each_capability(name):
     assert name in README
+
+
+def test_each_signature_the_prose_writes_names_real_parameters():
+    # `rt.CosineDip(depth, length, repeat, ...)` once named a parameter that
+    # CosineDip does not have (period); every `rt.name(a, b, c=...)` written in
+    # the prose (not the code blocks) names its arguments as the signature does
+    prose = re.sub(r"```.*?```", "", README, flags=re.S).replace("\n", " ")
+    checked = 0
+    for span in re.findall(r"`([^`]+)`", prose):
+        for name, arguments in re.findall(r"\brt\.([A-Za-z_]\w*)\(([^()]*)\)", span):
+            names = [a.split("=")[0].strip() for a in arguments.split(",")
+                     if a.strip() and a.strip() != "..."]
+            if not all(re.fullmatch(r"[a-z_]\w*", n) for n in names):
+                continue                              # values, not a signature
+            parameters = inspect.signature(getattr(rt, name)).parameters
+            free = any(p.kind is p.VAR_KEYWORD for p in parameters.values())
+            for argument in names:
+                assert argument in parameters or free, (name, argument, list(parameters))
+            checked += bool(names)
+    assert checked >= 10
 
 
 def test_make_help_lists_venv():

@@ -7,6 +7,8 @@ rigid track's and the free rail's, the mean against statics, and Eisenmann's
 factor against its own statement.
 """
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -19,6 +21,7 @@ from railtrack.equations.track_wheel_load import (moving_wheels_receptance,
 from railtrack.equations.vehicle_response import spectral_wheel_load_std
 from railtrack.equations.wheel_train_receptance import wheel_train_receptance
 from railtrack.model.irregularity import FRASpectrum
+from railtrack.studies import wheel_load_statistics as study
 from railtrack.studies.wheel_load_statistics import wheel_load_statistics
 
 CAR = rt.Vehicle.manchester()
@@ -153,3 +156,43 @@ def test_eisenmann_as_stated():
         arguments = dict(load=100e3, speed=30.0, condition="good", t=3) | bad
         with pytest.raises(ValueError):
             eisenmann_dynamic_load(**arguments)
+
+
+def test_a_speed_typed_in_km_per_h_warns_before_any_solve():
+    # 160 km/h typed as 160 "m/s": faster than any train in service (350 km/h), and
+    # over a rough rail the wheels leave it (the first realisation fails after a
+    # minute).  The warning comes first: realisations=1 is refused only after it.
+    with pytest.warns(rt.PlausibilityWarning, match=r"km/h\? \(160 km/h = 44.4 m/s\)") as caught:
+        with pytest.raises(ValueError, match="realisations"):
+            wheel_load_statistics(TRACK, LAW, CAR, FRASpectrum(4), 160.0, wagon_length=H,
+                                  realisations=1)
+    assert caught[0].filename == __file__
+    with warnings.catch_warnings():      # a service speed (350 km/h at most) is quiet
+        warnings.simplefilter("error", rt.PlausibilityWarning)
+        for speed in (SPEED, 350 / 3.6):
+            with pytest.raises(ValueError, match="realisations"):
+                wheel_load_statistics(TRACK, LAW, CAR, FRASpectrum(4), speed,
+                                      wagon_length=H, realisations=1)
+
+
+def test_a_first_realisation_that_fails_is_warned_about_before_the_others(monkeypatch):
+    # Every rough ride is made to fail (one Newton step); the smooth one solves.
+    real, before = study.solve, []
+
+    def one_step(*args, profile=None, **kwargs):
+        if profile is None:
+            return real(*args, profile=profile, **kwargs)
+        before.append(any("first realisation" in str(w.message) for w in caught))
+        return real(*args, profile=profile, max_iterations=1, **kwargs)
+
+    monkeypatch.setattr(study, "solve", one_step)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        with pytest.raises(RuntimeError, match="none of the 3"):
+            wheel_load_statistics(TRACK, LAW, CAR, FRASpectrum(6), SPEED, wagon_length=H,
+                                  realisations=3, progress=False)
+    assert before == [False, True, True]     # warned after the first, before the second
+    early = [w for w in caught if "first realisation" in str(w.message)]
+    assert len(early) == 1 and issubclass(early[0].category, rt.ConvergenceWarning)
+    assert "the other 2 may fail" in str(early[0].message)
+    assert early[0].filename == __file__

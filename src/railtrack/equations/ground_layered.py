@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.ground import Ground
+from ..model.plausibility_check import check_plausible, quantities_to_si
 from ..model.validation import require_finite, require_positive
 from .ground_strip import static_strip_flexibility, strip_flexibility
 
@@ -98,6 +99,7 @@ class LayeredGround:
     rails: int = 2
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         if not isinstance(self.ground, Ground):
             raise TypeError("ground must be a railtrack.model.ground.Ground (layers over a "
                             f"half-space); got {type(self.ground).__name__}")
@@ -111,6 +113,7 @@ class LayeredGround:
                              f"load the strip); got {self.rails!r}")
         object.__setattr__(self, "width", float(self.width))
         object.__setattr__(self, "footprint", float(self.footprint))
+        check_plausible(self)       # a width in mm (2600 for 2.6 m): PlausibilityWarning
 
     def compliance(self, kx, omega: float) -> np.ndarray:
         """C(k_x, omega) [m^2/N] for wavenumbers k_x [rad/m] at one omega >= 0 [rad/s]."""

@@ -118,9 +118,9 @@ def layer_stiffness(layer: SoilLayer, k, omega) -> np.ndarray:
     --------
     Statically a thin layer is a column in oedometric compression, M / h:
 
-    >>> layer = SoilLayer(100.0, 0.25, 2000.0, thickness=0.01)
-    >>> K = layer_stiffness(layer, 1e-3, 0.0)
-    >>> round(float(K[3, 3].real) / (layer.constrained_modulus / 0.01), 6)
+    >>> layer = SoilLayer(100.0, 0.25, 2000.0, thickness=0.1)
+    >>> K = layer_stiffness(layer, 1e-4, 0.0)
+    >>> round(float(K[3, 3].real) / (layer.constrained_modulus / 0.1), 6)
     1.0
     """
     k, omega = _prepare(k, omega)

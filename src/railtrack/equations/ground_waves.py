@@ -12,7 +12,6 @@ there instead of vanishing.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
 import numpy as np
@@ -58,8 +57,7 @@ def rayleigh_speed(shear_wave_speed: float, poisson_ratio: float) -> float:
 
 
 def _undamped(ground: Ground) -> Ground:
-    return Ground(tuple(dataclasses.replace(layer, damping_ratio=0.0) for layer in ground.layers),
-                  dataclasses.replace(ground.halfspace, damping_ratio=0.0))
+    return ground.with_damping(0.0)
 
 
 def rayleigh_determinant(ground: Ground, speed, omega: float) -> np.ndarray:
@@ -76,8 +74,8 @@ def rayleigh_determinant(ground: Ground, speed, omega: float) -> np.ndarray:
 
     Examples
     --------
-    >>> ground = Ground.homogeneous(1.0, 0.25, 1.0)
-    >>> bool(rayleigh_determinant(ground, 0.9, 1.0) * rayleigh_determinant(ground, 0.95, 1.0) < 0)
+    >>> ground = Ground.homogeneous(100.0, 0.25, 1800.0)     # c_R = 91.9 m/s
+    >>> bool(rayleigh_determinant(ground, 90.0, 100.0) * rayleigh_determinant(ground, 95.0, 100.0) < 0)
     True
     """
     elastic = _undamped(ground)

@@ -68,7 +68,7 @@ def moving_load_displacement(ground: Ground, bending_stiffness: float, mass: flo
     w(0) = P / (8 EI beta^3), beta = (k / 4 EI)^(1/4):
 
     >>> from railtrack.model.ground import SoilLayer
-    >>> layer = SoilLayer(100.0, 0.3, 100.0, thickness=0.02)
+    >>> layer = SoilLayer(25.0, 0.3, 1600.0, thickness=0.02)   # M = 3.5 MPa
     >>> ground = Ground((layer,), SoilLayer(5000.0, 0.25, 2500.0))
     >>> bed = layer.constrained_modulus * 2.0 / 0.02
     >>> beta = (bed / (4 * 6.4e6)) ** 0.25

@@ -24,9 +24,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .plausibility_check import check_plausible, check_value, quantities_to_si
 from .validation import require_finite, require_non_negative, require_positive
 
 __all__ = ["SoilLayer", "Ground"]
+
+
+def _require_damping_ratio(xi) -> None:
+    require_non_negative("damping_ratio", xi)
+    if not xi < 0.5:
+        raise ValueError(f"damping_ratio must be < 0.5 (a ratio, not a percentage); got {xi!r}")
 
 
 @dataclass(frozen=True)
@@ -61,21 +68,41 @@ class SoilLayer:
     thickness: float = math.inf
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         require_positive("shear_wave_speed", self.shear_wave_speed, "m/s")
         require_finite("poisson_ratio", self.poisson_ratio)
         if not 0.0 < self.poisson_ratio < 0.5:
             raise ValueError("poisson_ratio must lie strictly between 0 and 0.5 (0 < nu < 0.5); "
                              f"got {self.poisson_ratio!r}")
         require_positive("density", self.density, "kg/m^3")
-        require_non_negative("damping_ratio", self.damping_ratio)
-        if not self.damping_ratio < 0.5:
-            raise ValueError(f"damping_ratio must be < 0.5 (a ratio, not a percentage); "
-                             f"got {self.damping_ratio!r}")
+        _require_damping_ratio(self.damping_ratio)
         if self.thickness != math.inf:
             require_positive("thickness", self.thickness, "m")
         for name in ("shear_wave_speed", "poisson_ratio", "density", "damping_ratio",
                      "thickness"):
             object.__setattr__(self, name, float(getattr(self, name)))
+        check_plausible(self)       # c_s in km/s, h in mm: PlausibilityWarning
+
+    def with_damping(self, damping_ratio: float) -> SoilLayer:
+        """This layer with the damping ratio xi [-]; only xi is checked again.
+
+        The other fields were checked (and warned about) when this layer was
+        built: a library routine that sets xi (0 for the undamped waves)
+        does not warn about them a second time.
+
+        >>> SoilLayer(100.0, 0.3, 1800.0, 0.02).with_damping(0.05).damping_ratio
+        0.05
+        """
+        _require_damping_ratio(damping_ratio)
+        check_value("SoilLayer.damping_ratio", damping_ratio, "soil_damping_ratio")
+        return self._damped(damping_ratio)
+
+    def _damped(self, damping_ratio) -> SoilLayer:
+        layer = object.__new__(SoilLayer)       # unchecked: the caller checked xi
+        for name in ("shear_wave_speed", "poisson_ratio", "density", "thickness"):
+            object.__setattr__(layer, name, getattr(self, name))
+        object.__setattr__(layer, "damping_ratio", float(damping_ratio))
+        return layer
 
     @classmethod
     def from_young_modulus(cls, young_modulus: float, poisson_ratio: float, density: float,
@@ -169,6 +196,13 @@ class Ground:
         ()
         """
         return cls((), SoilLayer(shear_wave_speed, poisson_ratio, density, damping_ratio))
+
+    def with_damping(self, damping_ratio: float) -> Ground:
+        """The same strata with the damping ratio xi [-] in every one (`SoilLayer.with_damping`)."""
+        _require_damping_ratio(damping_ratio)
+        check_value("Ground.damping_ratio", damping_ratio, "soil_damping_ratio")
+        return Ground(tuple(layer._damped(damping_ratio) for layer in self.layers),
+                      self.halfspace._damped(damping_ratio))
 
     @property
     def strata(self) -> tuple[SoilLayer, ...]:

@@ -26,6 +26,9 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 
+from .ground import Ground, SoilLayer
+from .plausibility_check import check_plausible, quantities_to_si
+
 __all__ = ["GroundCompliance", "WinklerGround", "check_ground"]
 
 
@@ -68,6 +71,7 @@ class WinklerGround:
     damping: float = 0.0
 
     def __post_init__(self) -> None:
+        quantities_to_si(self)
         for name, value, low in (("modulus", self.modulus, "> 0"),
                                  ("footprint", self.footprint, "> 0"),
                                  ("damping", self.damping, ">= 0")):
@@ -77,6 +81,7 @@ class WinklerGround:
             bad = value < 0 if low == ">= 0" else value <= 0
             if not np.isfinite(value) or bad:
                 raise ValueError(f"{name} must be finite and {low}; got {value!r}")
+        check_plausible(self)       # a footprint in mm: PlausibilityWarning
 
     def compliance(self, kx, omega):
         kx = np.asarray(kx, dtype=float)
@@ -94,6 +99,12 @@ def check_ground(ground, spacing: float) -> None:
     ...
     ValueError: ground.footprint (the sleeper's width along the track) must be finite, > 0 and <= the sleeper spacing L = 0.6 m (footprints do not overlap); got 0.7
     """
+    if isinstance(ground, (Ground, SoilLayer)):       # the soil itself, not yet under sleepers
+        soil = "soil" if isinstance(ground, Ground) else "rt.Ground((), soil)"
+        raise TypeError(f"ground= takes the soil as the sleepers load it: wrap the "
+                        f"{type(ground).__name__} soil in rt.LayeredGround({soil}, width=2.6, "
+                        "footprint=0.25), width [m] the strip loaded across the track (about "
+                        "the sleeper's length), footprint [m] the sleeper's width along it")
     if not callable(getattr(ground, "compliance", None)) or not hasattr(ground, "footprint"):
         raise TypeError("ground must have a compliance(kx, omega) method and a footprint "
                         f"width [m] (railtrack.model.ground_protocol.GroundCompliance); got {type(ground).__name__}")

@@ -11,9 +11,11 @@ range's factor of ten nothing is said: studies past service speeds or with
 unusual tracks stay quiet.
 
 What cannot be caught: a slip by less than ten.  A speed typed in km/h is
-3.6 times too large (160 "m/s" for 160 km/h is a plausible speed), a load in
-kilogram-force 9.81 times too small, a mass per axle instead of per wheel
-twice too large.  State the unit instead: pass a pint Quantity
+3.6 times too large (160 "m/s" for 160 km/h is a plausible speed; only
+`railtrack.studies.wheel_load_statistics`, a study of trains in service,
+warns above their 350 km/h), a load in kilogram-force 9.81 times too small,
+a mass per axle instead of per wheel twice too large.  State the unit
+instead: pass a pint Quantity
 (``220 * ureg("MN/m")``), which is converted to SI at the boundary.
 
 Sources are cited by the keys of the book's bibliography (book/references.bib)
@@ -77,6 +79,7 @@ _K93 = "Knothe & Grassie 1993 [knothe1993], as commonly quoted"
 _TABLE1 = "Hoang et al. 2015, Table 1 [hoang2015fast]"
 _MPE = ("Table 1 of 'Study on transmission characteristics of vertical rail vibrations in "
         "ballast track', Math. Probl. Eng. 2017, 5872419")
+_EC8 = "EN 1998-1:2004 (Eurocode 8), Table 3.1, ground types by v_s,30"
 
 PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
     PlausibleRange(
@@ -193,6 +196,43 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "track_damping", "N s/m", 1e4, 5e5, "equivalent track dampings per wheel are",
         "55.4 kN s/m for British track (Jenkins et al. 1974 [jenkins1974], as p2_force quotes "
         "them); 340 kN s/m fitted to the paper's track (equivalent_track)"),
+    # the ground beneath (SoilLayer, LayeredGround, WinklerGround)
+    PlausibleRange(
+        "soil_shear_wave_speed", "m/s", 30.0, 3000.0, "soils and rocks carry shear waves at",
+        _EC8 + ": soft clays and silts (S1) below 100 m/s, D below 180, C 180-360, B 360-800, "
+        "rock (A) above 800 m/s; soft clay of 40-70 m/s under the track at Ledsgard "
+        "(Madshus & Kaynia 2000 [madshus2000], as commonly quoted); hard rock a few km/s "
+        "(as commonly quoted); the book's chapter 16: 45-810 m/s"),
+    PlausibleRange(
+        "soil_density", "kg/m^3", 1200.0, 2800.0, "soils and rocks have densities",
+        "unit weights of about 12 kN/m^3 (organic clay, peat) to 21-22 kN/m^3 (dense gravel, "
+        "glacial till), rock about 26-27 kN/m^3 (Das, Principles of Geotechnical "
+        "Engineering, as commonly quoted); the book's chapter 16: 1300-2000 kg/m^3"),
+    PlausibleRange(
+        "poisson_ratio", "-", 0.1, 0.5, "soils' Poisson's ratios are",
+        "0.15-0.45 drained, sands, silts and clays (Das, as commonly quoted), near 0.5 for a "
+        "saturated soil that cannot drain (the book's 0.49 clay); 0.5 and above are refused"),
+    PlausibleRange(
+        "soil_damping_ratio", "-", 0.005, 0.1, "soils' hysteretic damping ratios are",
+        "0.5-5 % at the small strains of traffic (Kramer 1996, Geotechnical Earthquake "
+        "Engineering, as commonly quoted); 3-10 % in EN 1998-5:2004 (Eurocode 8 part 5), "
+        "Table 4.1, for strong shaking; the book's chapter 16: 1.5-6 %"),
+    PlausibleRange(
+        "layer_thickness", "m", 0.1, 100.0, "soil layers are",
+        "a 0.3 m ballast or sub-ballast layer (Esveld 2001 [esveld2001], as commonly quoted) "
+        "to deposits of several tens of metres, " + _EC8 + " (ground types B, C, S1; "
+        "surface alluvium 5-20 m in type E); the book's chapter 16: 4-6 m, and 500 m strata "
+        "of a wave-speed test"),
+    PlausibleRange(
+        "strip_width", "m", 1.5, 5.0, "loaded strips across the track are",
+        "sleepers 2.3-2.8 m long: 2.6 m for standard-gauge concrete monoblocks and timber, "
+        "2.59 m (8.5 ft) ties in North America (Esveld 2001 [esveld2001], as commonly "
+        "quoted), shorter for metre gauge; wider at the ballast's base; the book's chapter "
+        "16: 3 m"),
+    PlausibleRange(
+        "footprint", "m", 0.15, 0.4, "sleepers' widths along the track are",
+        "0.22-0.30 m at the base of timber and concrete sleepers (Esveld 2001 [esveld2001], "
+        "as commonly quoted); the book's chapter 16: 0.25 m"),
 )
 """The plausible range of every input with a physical range (module docstring)."""
 

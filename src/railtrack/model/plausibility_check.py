@@ -62,6 +62,13 @@ FIELDS: dict[str, dict[str, tuple[str, str | None]]] = {
                     "gravity": ("m/s^2", "gravity")},
     "EquivalentTrack": dict(mass=("kg", "track_mass"), stiffness=("N/m", "track_stiffness"),
                             damping=("N s/m", "track_damping")),
+    "SoilLayer": dict(shear_wave_speed=("m/s", "soil_shear_wave_speed"),
+                      poisson_ratio=("", "poisson_ratio"), density=("kg/m^3", "soil_density"),
+                      damping_ratio=("", "soil_damping_ratio"),
+                      thickness=("m", "layer_thickness")),     # inf (the half-space): unchecked
+    "WinklerGround": dict(modulus=("N/m^2", None), footprint=("m", "footprint"),
+                          damping=("N s/m^2", None)),
+    "LayeredGround": dict(width=("m", "strip_width"), footprint=("m", "footprint")),
 }
 """For each dataclass, each dimensional field's SI unit and its row of the table (or None)."""
 
@@ -79,6 +86,7 @@ _SLIPS: dict[str, tuple[tuple[float, str], ...]] = {
     "N/m^1.5": ((1e3, "kN/m^1.5"), (1e6, "MN/m^1.5"), (1e9, "GN/m^1.5"),
                 (1e3**1.5, "N/mm^1.5")),
     "N/m^3": ((1e3, "kN/m^3"), (1e6, "MN/m^3"), (1e9, "N/mm^3"), (1e12, "kN/mm^3")),
+    "kg/m^3": ((1e3, "g/cm^3"), (1e3 / 9.81, "kN/m^3")),     # kN/m^3: a unit weight
 }
 
 
@@ -102,7 +110,7 @@ def likely_slip(value: float, row: PlausibleRange) -> str:
             for factor, unit in _SLIPS.get(row.unit, ())
             if row.low <= value * factor <= row.high]
     if not fits:
-        return "is it in SI units?"
+        return "is it in SI units?" if row.unit != "-" else "a slipped decimal point?"
     _, factor, unit = min(fits)
     return f"{unit}? ({_number(value)} {unit} = {_number(value * factor)} {row.unit})"
 
@@ -147,8 +155,9 @@ def check_value(label: str, value, row_field: str) -> None:
     x = float(array[worst])
     more = int(np.sum(factors >= ORDER_OF_MAGNITUDE)) - 1
     others = f" (and {more} more)" if more else ""
-    warn_implausible(f"{label} = {_number(x)} {row.unit}{others}; {row.what} "
-                     f"{_number(row.low)}-{_number(row.high)} {row.unit}: "
+    unit = "" if row.unit == "-" else f" {row.unit}"     # "-": a ratio, no unit
+    warn_implausible(f"{label} = {_number(x)}{unit}{others}; {row.what} "
+                     f"{_number(row.low)}-{_number(row.high)}{unit}: "
                      f"{likely_slip(x, row)}")
 
 

@@ -38,6 +38,10 @@ class Dissipation:
         Taken in by the ground, ``int f u' dt``, u its displacement under the
         sleeper (`railtrack.GroundSolution`; it radiates or dissipates it); 0 on
         a rigid ground.
+    total : float
+        pad + foundation + ground, the work of the wheel loads (`load_work`).
+    pad_share : float
+        pad / total [-].
     """
 
     pad: float
@@ -67,8 +71,8 @@ def dissipation(solution, samples: int | None = None) -> Dissipation:
 
     Parameters
     ----------
-    solution : railtrack.Solution
-        A steady-state solution (eq. 19).
+    solution : railtrack.Solution or railtrack.GroundSolution
+        A steady-state solution (eq. 19), on a rigid base or on a ground.
     samples : int, optional
         Points over the period; at least 4 m + 4, where the means of the
         products are exact for the pad (the foundation's only for a linear law).
@@ -76,7 +80,15 @@ def dissipation(solution, samples: int | None = None) -> Dissipation:
     Returns
     -------
     Dissipation
-        ``pad`` and ``foundation`` [J per sleeper and period].
+        Energies per sleeper and period [J]:
+
+        - ``.pad``: dissipated by the rail pad;
+        - ``.foundation``: by the foundation law (its dashpot or hysteresis);
+        - ``.ground``: taken in by the ground under a `railtrack.GroundSolution`,
+          radiated or damped by the soil; 0 on a rigid base;
+        - ``.total``: pad + foundation + ground, the wheel loads' work
+          (`load_work`);
+        - ``.pad_share``: pad / total [-].
 
     Examples
     --------

@@ -33,11 +33,13 @@ gives.
 
 from __future__ import annotations
 
+import time
 import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..model.plausibility_check import warn_implausible
 from ..model.random_profile import RandomProfile
 from ..model.vehicle import Vehicle
 from ..solvers.arguments import require_count
@@ -46,13 +48,25 @@ from ..solvers.convergence import ConvergenceWarning, TruncationWarning
 from ..solvers.progress import progress_bar, show_progress
 from ..solvers.solve import solve
 
-__all__ = ["WheelLoadStatistics", "wheel_load_statistics", "LEVELS", "PROGRESS_REALISATIONS"]
+__all__ = ["WheelLoadStatistics", "wheel_load_statistics", "LEVELS", "PROGRESS_REALISATIONS",
+           "SERVICE_SPEED"]
 
 LEVELS = (0.683, 0.955, 0.997)
 """The fractions of the wheel load inside Q -+ t sigma, t = 1, 2, 3, if it is normal."""
 
 PROGRESS_REALISATIONS = 50
 """With ``progress=None`` the bar is shown from this many realisations (~20 s)."""
+
+SERVICE_SPEED = 350.0 / 3.6
+"""97.2 m/s (350 km/h), the fastest trains in passenger service, as commonly quoted.
+
+A faster speed warns `PlausibilityWarning` before any solve: 160 typed
+for 160 km/h is 160 m/s, near the 159.7 m/s world record [tgvrecord2007].
+On the README's example (ballasted track, FRA class 4) at 160 m/s the
+wheels leave the rail and the first realisation fails after 72-196 s (on a
+shared 2-core machine; 0.3 s at 45 m/s).  A first realisation that fails
+is warned about at once (`ConvergenceWarning`), before the others run.
+"""
 
 
 @dataclass(frozen=True, repr=False)
@@ -173,6 +187,11 @@ def wheel_load_statistics(track, foundation, vehicle: Vehicle, spectrum, speed: 
     >>> found.failed, bool(abs(found.mean[0] / found.static_load - 1) < 1e-6)
     (0, True)
     """
+    if isinstance(speed, (int, float, np.floating, np.integer)) and speed > SERVICE_SPEED:
+        warn_implausible(f"speed = {speed:g} m/s ({3.6 * speed:.0f} km/h), above the fastest "
+                         f"trains in service ({3.6 * SERVICE_SPEED:.0f} km/h): km/h? "
+                         f"({speed:g} km/h = {speed / 3.6:.3g} m/s); over a rough rail the "
+                         "wheels may leave it, and each failed realisation takes a minute or more")
     if not isinstance(vehicle, Vehicle):
         raise TypeError(f"vehicle must be a railtrack.Vehicle; got {type(vehicle).__name__}")
     count = require_count("realisations", realisations, 2)
@@ -199,14 +218,18 @@ def wheel_load_statistics(track, foundation, vehicle: Vehicle, spectrum, speed: 
     if not smooth.converged:
         raise RuntimeError(f"the ride over the smooth rail did not converge: {smooth.message}")
     smooth_std = forces.std(axis=1)
-    with progress_bar(shown, count, "random rails", "rails") as bar, \
-            warnings.catch_warnings():
-        # every failure or truncation is counted and warned about once below
-        warnings.simplefilter("ignore", ConvergenceWarning)
-        warnings.simplefilter("ignore", TruncationWarning)
+    with progress_bar(shown, count, "random rails", "rails") as bar:
         for i, value in enumerate(seeds):
             rail = RandomProfile(spectrum, wavelengths, period, int(value))
-            found, forces = ride(rail, wagons)
+            start = time.perf_counter()
+            with warnings.catch_warnings():
+                # every failure or truncation is counted and warned about once below
+                warnings.simplefilter("ignore", ConvergenceWarning)
+                warnings.simplefilter("ignore", TruncationWarning)
+                found, forces = ride(rail, wagons)
+            if i == 0 and not found.converged and count > 1:     # say so before the rest
+                _first_failed(found, forces, time.perf_counter() - start, count,
+                              float(train.speed))
             converged[i], used[i] = found.converged, found.harmonics
             truncation[i] = found.truncation_error
             std[i], peak[i] = forces.std(axis=1), forces.max(axis=1)
@@ -234,3 +257,11 @@ def wheel_load_statistics(track, foundation, vehicle: Vehicle, spectrum, speed: 
     return WheelLoadStatistics(load, seeds, std, peak, converged, used, truncation,
                                every.mean(axis=1), every.std(axis=1), lower, upper,
                                smooth_std, inputs)
+
+
+def _first_failed(found, forces, seconds, count, speed) -> None:
+    """Warn, before the other realisations, that the first did not converge and how long it took."""
+    lost = " (a contact force reached 0: the wheels leave the rail)" if forces.min() <= 0 else ""
+    warnings.warn(f"the first realisation did not converge{lost} after {seconds:.0f} s, at "
+                  f"{speed:g} m/s = {3.6 * speed:.0f} km/h; the other {count - 1} may fail "
+                  f"as slowly ({found.message.split(';')[0]})", ConvergenceWarning, stacklevel=3)
