@@ -27,6 +27,7 @@ import scipy
 
 import railtrack as rt
 from targets import print_targets   # benchmarks/targets.py, beside this file
+from bench_flat import bench_flat
 from bench_ground import bench_ground
 from bench_statistics import bench_statistics
 
@@ -294,7 +295,8 @@ def _timed(function) -> float:
 
 SECTIONS = {"targets": print_targets, "solvers": main, "sweep": bench_sweep,
             "stability": bench_stability,
-            "cells": bench_cells, "wheels": bench_wheels, "ground": bench_ground,
+            "cells": bench_cells, "wheels": bench_wheels,
+            "flat": bench_flat, "ground": bench_ground,
             "statistics": bench_statistics}
 
 

@@ -69,6 +69,7 @@ from .studies.random_support import RandomSupport, random_support
 from .model.wheel import Wheel
 from .model.vehicle import Vehicle
 from .model.profile import CosineDip, DippedJoint
+from .model.wheel_flat import WheelFlat
 from .solvers.wheel_solution import WheelSolution
 from .model.timoshenko import TimoshenkoRail
 from .studies.p2_force import EquivalentTrack, equivalent_track, p2_force
@@ -115,6 +116,7 @@ __all__ = [
     "Vehicle",
     "CosineDip",
     "DippedJoint",
+    "WheelFlat",
     "WheelSolution",
     "TimoshenkoRail",
     "p2_force",

@@ -169,6 +169,19 @@ PLAUSIBLE_RANGES: tuple[PlausibleRange, ...] = (
         "commonly quoted); "
         "3.1-12.6 mrad for the book's dips (2 pi depth / length)"),
     PlausibleRange(
+        "flat_depth", "m", 5e-5, 3e-3, "wheel flats are",
+        "a fresh flat's depth is its sagitta l^2 / (8 R): 0.17-1.7 mm for flats 25-80 mm "
+        "long on 0.46 m wheels; out-of-round wheels and when they are removed are surveyed "
+        "by Nielsen & Johansson 2000 [nielsen2000oor]"),
+    PlausibleRange(
+        "flat_length", "m", 0.02, 0.3, "wheel flats are",
+        "a few centimetres fresh, longer once worn round; the book's 100 mm rounded flat"),
+    PlausibleRange(
+        "wheel_circumference", "m", 2.0, 4.0, "wheel circumferences 2 pi R are",
+        "2.0-3.9 m for wheel diameters of 0.64-1.25 m, freight and passenger wheels "
+        "0.84-0.92 m new (2.6-2.9 m); 3.0 m in the book, a whole number of sleeper "
+        "spacings"),
+    PlausibleRange(
         "gap", "m", 1e-4, 5e-3, "gaps under hanging sleepers are",
         "0.5-2 mm voids studied by Lundqvist & Dahlberg 2005 [lundqvist2005] and in the book; "
         "voids of a few mm under unsupported sleepers (Sysyn et al. 2021 [sysyn2021], as "

@@ -50,6 +50,8 @@ FIELDS: dict[str, dict[str, tuple[str, str | None]]] = {
                       period=("m", None), centre=("m", None)),
     "DippedJoint": dict(angle=("rad", "dip_angle"), length=("m", "dip_length"),
                         period=("m", None), centre=("m", None)),
+    "WheelFlat": dict(depth=("m", "flat_depth"), length=("m", "flat_length"),
+                      circumference=("m", "wheel_circumference"), centre=("m", None)),
     "Vehicle": dict(body_mass=("kg", None), body_pitch_inertia=("kg m^2", None),
                     bogie_mass=("kg", None), bogie_pitch_inertia=("kg m^2", None),
                     wheelset_mass=("kg", None), secondary_stiffness=("N/m", None),

@@ -43,6 +43,18 @@ def _from_nearest(dip, x) -> np.ndarray:
     return s - dip.period * np.round(s / dip.period)
 
 
+def cosine_dip(s, depth: float, length: float) -> np.ndarray:
+    """-depth/2 (1 + cos(2 pi s / length)) for |s| < length/2, else 0 [m]; s [m]."""
+    inside = np.abs(s) < 0.5 * length
+    return np.where(inside, -0.5 * depth * (1.0 + np.cos(2 * np.pi * s / length)), 0.0)
+
+
+def cosine_slope(s, depth: float, length: float) -> np.ndarray:
+    """d/ds of `cosine_dip` [-]."""
+    inside = np.abs(s) < 0.5 * length
+    return np.where(inside, np.pi * depth / length * np.sin(2 * np.pi * s / length), 0.0)
+
+
 @dataclass(frozen=True)
 class CosineDip:
     """A dip of `depth` and `length`, centred at `centre`, repeating every `period`.
@@ -79,17 +91,11 @@ class CosineDip:
         _validate(self, "depth", "m", "a dip's length")
 
     def __call__(self, x) -> np.ndarray:
-        s = _from_nearest(self, x)
-        inside = np.abs(s) < 0.5 * self.length
-        return np.where(inside, -0.5 * self.depth * (1.0 + np.cos(2 * np.pi * s / self.length)),
-                        0.0)
+        return cosine_dip(_from_nearest(self, x), self.depth, self.length)
 
     def slope(self, x) -> np.ndarray:
         """dr/dx [-]."""
-        s = _from_nearest(self, x)
-        inside = np.abs(s) < 0.5 * self.length
-        return np.where(inside, np.pi * self.depth / self.length
-                        * np.sin(2 * np.pi * s / self.length), 0.0)
+        return cosine_slope(_from_nearest(self, x), self.depth, self.length)
 
 
 @dataclass(frozen=True)
