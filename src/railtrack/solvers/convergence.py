@@ -30,7 +30,11 @@ class ConvergenceError(RuntimeError):
 
 
 class ConvergenceWarning(UserWarning):
-    """A solve returned ``converged=False``: its answer is not a solution of eq. (17).
+    """A solve returned ``converged=False``: its answer is not the one asked for.
+
+    Either the iteration did not solve eq. (17), or ``harmonics="auto"``
+    solved it at an m whose estimated truncation error misses `accuracy`
+    (the message names m and the estimate; no `TruncationWarning` besides).
 
     Issued by `railtrack.solve` (and the studies built on it) unless
     ``strict=True``, which raises `ConvergenceError` instead.  The message
