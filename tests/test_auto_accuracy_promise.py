@@ -157,3 +157,79 @@ def test_wheel_auto_at_its_cap_fails_and_is_really_that_far_off(monkeypatch):
 def test_wheel_auto_within_reach_stays_converged():
     solved_within(lambda: rt.solve(TRACK, TRAIN45, LAW, wheel=WHEEL, profile=DIP,
                                    accuracy=1e-2), 1e-2)
+
+
+# --- a sweep (its own "auto", the same rule) ---------------------------------------------
+
+SPEEDS = np.linspace(30.0, 60.0, 5)
+
+
+def test_sweep_auto_out_of_rounds_counts_its_short_members_as_failures(monkeypatch):
+    from railtrack.studies import sweep as sweep_module
+
+    # "auto" stops at the paper's m = 15, which misses 1e-3 on the cubic law
+    monkeypatch.setattr(sweep_module, "predicted_harmonics", lambda *args: 15)
+    monkeypatch.setattr(sweep_module, "AUTO_ROUNDS", 0)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        result = rt.sweep(TRACK, TRAIN, CUBIC, speed=SPEEDS)
+    assert result.harmonics == 15 and not result.converged.any()
+    assert np.all(result.truncation_error > 1e-3)           # the independent check
+    messages = [str(w.message) for w in caught if w.category is rt.ConvergenceWarning]
+    assert len(messages) == 1 and "fell short of accuracy" in messages[0]
+    assert rt.TruncationWarning not in [w.category for w in caught]
+    assert np.all(np.isfinite(result.coefficients))          # kept for a look
+
+
+def test_sweep_auto_within_reach_stays_converged():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", rt.ConvergenceWarning)
+        warnings.simplefilter("error", rt.TruncationWarning)
+        result = rt.sweep(TRACK, TRAIN, CUBIC, speed=SPEEDS)
+    assert result.converged.all() and np.all(result.truncation_error <= 1e-3)
+
+
+# --- studies built on solve: a draw or realisation short of the accuracy is a failure --------
+
+def test_random_support_counts_draws_short_of_the_accuracy_as_failures(monkeypatch):
+    from railtrack.studies import random_support_batch
+
+    # the batch and the lone solve both capped at m = 10, which misses 1e-3 here
+    monkeypatch.setattr(random_support_batch, "MAX_CELL_HARMONICS", 10)
+    monkeypatch.setattr(cell_auto, "MAX_CELL_HARMONICS", 10)
+    train = rt.Train(18.0, (0.0, 3.0), (60e3, 90e3), 45.0)
+    with pytest.warns(rt.ConvergenceWarning, match="fell short"):
+        sample = rt.random_support(TRACK, train, LAW, sleepers=5, variation=0.3, draws=3,
+                                   seed=1)
+    assert not sample.converged.any() and np.all(sample.harmonics == 10)
+    assert np.all(sample.stability == "unknown")            # no look at a failure
+    assert "0 converged" in sample.summary()
+
+
+def test_wheel_load_statistics_counts_a_realisation_short_of_the_accuracy(monkeypatch):
+    from railtrack.model.irregularity import FRASpectrum
+    from railtrack.studies import wheel_load_statistics as statistics
+
+    real, rides = statistics.solve, []
+
+    def ride(track, train, foundation, harmonics, **options):
+        if options["profile"] is None:                     # the smooth rail: m = 264 meets it
+            return real(track, train, foundation, 264, **options)
+        rides.append(options["profile"])
+        # the first rail asks for 1e-5 Q, which no m up to 320 (capped) reaches
+        return real(track, train, foundation, harmonics, **options,
+                    accuracy=1e-5 if len(rides) == 1 else None)
+
+    monkeypatch.setattr(statistics, "solve", ride)
+    monkeypatch.setattr(rounds, "MAX_HARMONICS", 320)
+    car = rt.Vehicle.manchester()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        found = statistics.wheel_load_statistics(TRACK, rt.LinearFoundation.paper(), car,
+                                                 FRASpectrum(6), 45.0, wagon_length=26.4,
+                                                 realisations=2)
+    assert found.converged.tolist() == [False, True] and found.failed == 1
+    assert found.harmonics[0] == 320
+    assert found.truncation[0] > 1e-5 and found.truncation[1] <= 1e-3
+    kinds = [w.category for w in caught]
+    assert kinds.count(rt.ConvergenceWarning) == 1 and rt.TruncationWarning not in kinds

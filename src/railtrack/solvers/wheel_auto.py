@@ -36,7 +36,8 @@ from .guards import (
     warn_if_displaced,
 )
 from .wheel_newton import solve_wheels
-from .wheel_rounds import MAX_HARMONICS, auto_wheels, wrap
+from . import wheel_rounds
+from .wheel_rounds import auto_wheels, wrap
 from .wheel_solution import WheelSolution
 from .wheel_truncation import wheel_truncation
 
@@ -202,9 +203,10 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
         text = (f"harmonics={result.harmonics}: the estimated truncation error of the contact "
                 f"force is {result.truncation_error:.1%} of Q; pass a larger harmonics")
     budget_spent = max_iterations is not None and result.iterations >= iterations
+    stopped = (f"'auto' goes up to m = {wheel_rounds.MAX_HARMONICS} with wheels; the message "
+               "lists every m it tried")
     result, short = hold_to_accuracy(result, automatic, accuracy, strict, of="Q",
-                                     stopped=f"'auto' goes up to m = {MAX_HARMONICS} with wheels;"
-                                     " the message lists every m it tried")
+                                     stopped=stopped)
     warn_if_displaced(result)
     return result if short else report(result, strict, truncation_limit(automatic, accuracy),
                                        text, quiet=budget_spent)
