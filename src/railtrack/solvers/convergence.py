@@ -15,6 +15,10 @@ __all__ = ["ConvergenceError", "ConvergenceWarning", "TruncationWarning"]
 class ConvergenceError(RuntimeError):
     """Raised by ``solve(..., strict=True)`` when the iteration did not converge.
 
+    Or when ``harmonics="auto"`` fell short of its accuracy (the equations
+    solved at an m whose estimated truncation error misses it): then
+    ``slow_harmonics`` is empty and the solution's ``truncation_error`` says by how much.
+
     Attributes
     ----------
     solution : Solution

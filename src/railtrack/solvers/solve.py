@@ -213,8 +213,8 @@ def solve(
     Returns
     -------
     Solution
-        With ``converged`` and ``truncation_error``.  A diverging iteration
-        is reported as ``converged=False`` with a message saying so.
+        With ``converged`` and ``truncation_error``.  A diverging iteration,
+        or "auto" short of `accuracy`, is ``converged=False``, the message says which.
 
     Raises
     ------
