@@ -146,8 +146,10 @@ def test_solve_reaches_the_single_solution_above_the_folds(branch_25, speed):
         polished.coefficients).max()
 
 
-def test_truncation_warning_of_auto_does_not_advise_auto():
-    with pytest.warns(rt.TruncationWarning) as caught:
-        rt.solve(rt.Track.paper(), rt.Train.paper(), rt.LinearFoundation.paper(),
-                 method="analytic", accuracy=1e-13)
+def test_auto_short_of_its_accuracy_fails_and_does_not_advise_auto():
+    # 'auto' stopped short is a failure (converged=False), whose advice is not 'auto' again
+    with pytest.warns(rt.ConvergenceWarning, match="fell short") as caught:
+        result = rt.solve(rt.Track.paper(), rt.Train.paper(), rt.LinearFoundation.paper(),
+                          method="analytic", accuracy=1e-13)
+    assert not result.converged and result.truncation_error > 1e-13
     assert "use 'auto'" not in str(caught[0].message)

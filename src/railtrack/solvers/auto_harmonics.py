@@ -4,8 +4,10 @@
 predicts from eq. (23) (through m / 4 first when that is above
 `WARM_START_ABOVE`), and while the solution's estimated truncation error
 misses the accuracy, grows m to what the solution's own spectrum needs
-(`next_system`), at most `AUTO_ROUNDS` times.  An explicit m is kept, and
-warns when its estimate exceeds `WARN_TRUNCATION` (`truncation_warning`).
+(`next_system`), at most `AUTO_ROUNDS` times; where it stops short of the
+accuracy the result is a failure (`railtrack.solvers.guards.hold_to_accuracy`,
+told why by `auto_stopped`).  An explicit m is kept, and warns when its
+estimate exceeds `WARN_TRUNCATION` (`truncation_warning`).
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ from .truncation import (
 )
 
 __all__ = ["DEFAULT_ACCURACY", "WARN_TRUNCATION", "AUTO_ROUNDS", "WARM_START_ABOVE",
-           "first_system", "next_system", "truncation_warning"]
+           "first_system", "next_system", "truncation_warning", "auto_stopped"]
 
 DEFAULT_ACCURACY = 1e-3
 """Relative truncation error (max norm of w over the period / peak) that harmonics="auto" meets."""
@@ -86,17 +88,21 @@ def next_system(passage: Passage, foundation, method: str, m: int, target: int, 
     return grown, spectrum, system, initial
 
 
-def truncation_warning(passage: Passage, foundation, m: int, estimate: float,
-                       automatic: bool) -> TruncationWarning:
-    """The warning for a converged solution whose estimated truncation error is too large."""
-    if not automatic:
-        fix = ("harmonics='auto' picks m = "
-               f"{predict_harmonics(passage, foundation, DEFAULT_ACCURACY / 2)[0]}")
-    elif m >= MAX_AUTO_HARMONICS:
-        fix = f"the largest m that 'auto' takes is {MAX_AUTO_HARMONICS}"
-    else:
-        fix = f"'auto' stopped after {AUTO_ROUNDS + 1} solves"
-    advice = "pass a larger harmonics" if automatic else "pass a larger harmonics or use 'auto'"
+def truncation_warning(passage: Passage, foundation, m: int, estimate: float) -> TruncationWarning:
+    """The warning for a converged solution at an explicit m whose estimate exceeds 1 %.
+
+    (harmonics="auto" that misses its accuracy is a failure instead:
+    `railtrack.solvers.guards.hold_to_accuracy`, told why by `auto_stopped`.)
+    """
+    chosen = predict_harmonics(passage, foundation, DEFAULT_ACCURACY / 2)[0]
     return TruncationWarning(
         f"harmonics={m}: the estimated truncation error is {estimate:.1%} of the peak "
-        f"sleeper displacement; {fix} ({advice})")
+        f"sleeper displacement; harmonics='auto' picks m = {chosen} (pass a larger "
+        "harmonics or use 'auto')")
+
+
+def auto_stopped(m: int) -> str:
+    """Why harmonics="auto" for one sleeper went no further than m."""
+    if m >= MAX_AUTO_HARMONICS:
+        return f"the largest m that 'auto' takes is {MAX_AUTO_HARMONICS}"
+    return f"'auto' stopped after {AUTO_ROUNDS + 1} solves"

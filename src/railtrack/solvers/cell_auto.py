@@ -11,8 +11,12 @@ estimated tails need, at most `AUTO_ROUNDS` times and up to
 search: m grows by half, from the last converged level where there is one,
 up to `FAILED_LEVELS` failures in a row; the message lists each m tried and
 what happened there.  Stopped by the cap (a law whose force jumps at
-contact: the seat load's error falls about as 1/m), the warning says which
+contact: the seat load's error falls about as 1/m), the message says which
 m the last two levels' errors, extrapolated, put within the accuracy.
+Through `solve_track_cell` (`railtrack.solve`), "auto" that stops short of
+the accuracy is a failure, ``converged=False``
+(`railtrack.solvers.guards.hold_to_accuracy`); an explicit m converged at
+that m warns above 1 %.
 """
 
 from __future__ import annotations
@@ -41,6 +45,7 @@ from .guards import (
     checked_accuracy,
     checked_stability,
     checked_tol,
+    hold_to_accuracy,
     look_at_stability,
     refuse_unused,
     require_scalar_fields,
@@ -184,14 +189,17 @@ def solve_track_cell(track, train, cell, harmonics="auto", method: str = "newton
                             samples=samples, initial=initial)
         if result.converged:
             result = replace(result, truncation_error=cell_truncation(result)[0])
-    advice = "pass a larger harmonics"
-    if automatic and needed is not None:
-        advice = (f"harmonics='auto' stops at {MAX_CELL_HARMONICS} for a cell (a law that kinks "
-                  f"or jumps converges slowly); about harmonics={needed} would meet accuracy "
-                  f"{accuracy:.1%}")
-    result = report(result, strict, truncation_limit(automatic, accuracy),
-                    f"harmonics={result.harmonics}: the estimated truncation error is "
-                    f"{result.truncation_error:.1%} of the largest sleeper peak; {advice}")
+    stopped = f"'auto' stopped after {AUTO_ROUNDS + 1} converged levels"
+    if needed is not None:
+        stopped = (f"'auto' stops at {MAX_CELL_HARMONICS} for a cell (a law that kinks or jumps "
+                   f"converges slowly); about harmonics={needed} would meet it")
+    result, short = hold_to_accuracy(result, automatic, accuracy, strict, stopped=stopped,
+                                     of="the largest sleeper peak")
+    if not short:
+        result = report(result, strict, truncation_limit(automatic, accuracy),
+                        f"harmonics={result.harmonics}: the estimated truncation error is "
+                        f"{result.truncation_error:.1%} of the largest sleeper peak; pass a "
+                        "larger harmonics")
     judged = look_at_stability(result, stability, stacklevel=5)
     return result if judged is None else replace(result, stability=judged)
 

@@ -15,6 +15,10 @@ __all__ = ["ConvergenceError", "ConvergenceWarning", "TruncationWarning"]
 class ConvergenceError(RuntimeError):
     """Raised by ``solve(..., strict=True)`` when the iteration did not converge.
 
+    Or when ``harmonics="auto"`` fell short of its accuracy (the equations
+    solved at an m whose estimated truncation error misses it): then
+    ``slow_harmonics`` is empty and the solution's ``truncation_error`` says by how much.
+
     Attributes
     ----------
     solution : Solution
@@ -30,7 +34,11 @@ class ConvergenceError(RuntimeError):
 
 
 class ConvergenceWarning(UserWarning):
-    """A solve returned ``converged=False``: its answer is not a solution of eq. (17).
+    """A solve returned ``converged=False``: its answer is not the one asked for.
+
+    Either the iteration did not solve eq. (17), or ``harmonics="auto"``
+    solved it at an m whose estimated truncation error misses `accuracy`
+    (the message names m and the estimate; no `TruncationWarning` besides).
 
     Issued by `railtrack.solve` (and the studies built on it) unless
     ``strict=True``, which raises `ConvergenceError` instead.  The message

@@ -30,11 +30,12 @@ from ..model.foundations import as_foundation
 from ..model.ground_protocol import check_ground
 from ..model.passage import Passage
 from .arguments import require_count
-from .auto_harmonics import AUTO_ROUNDS, first_system, next_system, truncation_warning
+from .auto_harmonics import (AUTO_ROUNDS, WARN_TRUNCATION, auto_stopped, first_system,
+                             next_system, truncation_warning)
 from .conditioning import check_conditioning
 from .diagnosis import convergence_error
-from .guards import (check_laws_at_rest, checked_accuracy, checked_tol, require_scalar_fields,
-                     truncation_limit, warn_if_displaced)
+from .guards import (check_laws_at_rest, checked_accuracy, checked_tol, hold_to_accuracy,
+                     require_scalar_fields, warn_if_displaced)
 from .ground_solution import GroundSolution
 from .methods import check_method_arguments, run_method
 from .solution import ConvergenceWarning
@@ -103,6 +104,8 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
     `methods` is `railtrack.solvers.solve.METHODS`, passed in by `solve`.
 
     ``initial`` (with an explicit m) holds the relative displacement's d_0..d_m.
+    harmonics="auto" that stops short of `accuracy` returns ``converged=False``
+    and an explicit m warns above 1 %, as in `railtrack.solve`.
 
     Examples
     --------
@@ -143,7 +146,7 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
             break
         grown = next_system(passage, foundation, method, m, target, estimate, accuracy,
                             outcome.coefficients, tail, spectrum, remembered)
-        if grown is None:
+        if grown is None or _round == AUTO_ROUNDS:     # the last round's m is the one solved
             break
         m, spectrum, system, initial = grown
         target = m
@@ -152,10 +155,8 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
     if automatic:
         message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
                     f"estimated truncation error {estimate:.1e})")
-    if outcome.converged and np.isfinite(estimate) and estimate > truncation_limit(automatic,
-                                                                                   accuracy):
-        warnings.warn(truncation_warning(passage, foundation, m, estimate, automatic),
-                      stacklevel=3)
+    if not automatic and outcome.converged and estimate > WARN_TRUNCATION:
+        warnings.warn(truncation_warning(passage, foundation, m, estimate), stacklevel=3)
     d = np.asarray(outcome.coefficients, dtype=complex)
     with np.errstate(over="ignore", invalid="ignore"):
         forces = nonlinear_coefficients(system, d, strict=False) * float(passage.sleeper_mass)
@@ -169,10 +170,13 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
         force_coefficients=two_sided(forces))
     if strict and not solution.converged:
         raise convergence_error(method, outcome, solution, message)
+    solution, short = hold_to_accuracy(solution, automatic, accuracy, strict, stacklevel=4,
+                                       of="the peak sleeper displacement",
+                                       stopped=auto_stopped(m))
     if solution.converged:
         warn_if_displaced(solution)
     budget_spent = max_iterations is not None and outcome.iterations >= max_iterations
-    if not solution.converged and not budget_spent:
+    if not solution.converged and not budget_spent and not short:
         warnings.warn(ConvergenceWarning(not_converged_advice(
             method, message, passage, system.harmonics, stalled="line search" in outcome.message
             or False)), stacklevel=3)

@@ -12,6 +12,9 @@ for what must not differ between them:
 * the arguments a path does not use (`refuse_unused`): refused with the
   reason, never ignored;
 * the truncation warning's threshold (`truncation_limit`);
+* harmonics="auto" held to its accuracy (`hold_to_accuracy`): a level whose
+  estimated truncation error misses the accuracy (or has none) is a failure,
+  ``converged=False``, not a converged answer with a warning;
 * the quick stability look after a converged solve (`look_at_stability`);
 * how many failed levels harmonics="auto" steps past (`FAILED_LEVELS`);
 * a converged result no track survives (`warn_if_displaced`): a displacement
@@ -20,6 +23,7 @@ for what must not differ between them:
 
 from __future__ import annotations
 
+import dataclasses
 import reprlib
 import warnings
 
@@ -28,11 +32,13 @@ import numpy as np
 from ..model.plausibility_check import warn_implausible
 from .arguments import require_fraction
 from .auto_harmonics import DEFAULT_ACCURACY, WARN_TRUNCATION
+from .convergence import ConvergenceError, ConvergenceWarning
 from .foundation_at_rest import check_foundation_at_rest
 from .stability_hint import STABILITY_MODES, judge_stability
 
 __all__ = ["LARGEST_TOL", "FAILED_LEVELS", "checked_tol", "checked_accuracy",
            "check_laws_at_rest", "refuse_unused", "require_scalar_fields", "truncation_limit",
+           "hold_to_accuracy",
            "checked_stability", "look_at_stability", "LARGEST_DISPLACEMENT", "warn_if_displaced"]
 
 LARGEST_TOL = 1e-2
@@ -132,6 +138,44 @@ def truncation_limit(automatic: bool, accuracy: float) -> float:
     "auto" promised `accuracy`; an explicit m warns above `WARN_TRUNCATION` (1 %).
     """
     return accuracy if automatic else WARN_TRUNCATION
+
+
+def hold_to_accuracy(result, automatic: bool, accuracy: float, strict: bool, *, of: str,
+                     stopped: str, stacklevel: int = 4):
+    """A result of harmonics="auto" that misses its accuracy, as a failure: (result, short).
+
+    "auto" promised an answer within `accuracy`.  Where the last level
+    converged but its ``truncation_error`` exceeds `accuracy`, or is NaN
+    (no estimate could be made where "auto" stopped), the equations are
+    solved at that m, but the answer is not the one asked for: the result
+    comes back with ``converged=False`` and a message that says so, `stopped`
+    (why "auto" went no further) and how to proceed, with every field
+    (coefficients, truncation_error, harmonics) kept for a look.  Like any
+    failure it raises `ConvergenceError` with ``strict`` and warns
+    `ConvergenceWarning` otherwise (the one warning: no `TruncationWarning`
+    besides).  An explicit m, a failed iteration or a level that meets the
+    accuracy come back unchanged, with ``short`` False.  `of` names what the
+    estimate is relative to ("Q", "the peak sleeper displacement").
+    """
+    error = float(result.truncation_error)
+    if not (automatic and result.converged) or error <= accuracy:
+        return result, False
+    estimate = (f"the estimated truncation error, {_share(error)} of {of}, exceeds"
+                if np.isfinite(error) else "no truncation error could be estimated to meet")
+    text = (f"harmonics='auto' fell short: the equations are solved at m = {result.harmonics}, "
+            f"but {estimate} accuracy = {_share(accuracy)} ({stopped}). To proceed, pass an explicit "
+            "larger harmonics=m, loosen accuracy, or use the time-domain ring "
+            "(railtrack.simulate_time_domain)")
+    result = dataclasses.replace(result, converged=False, message=f"{result.message}; {text}")
+    if strict:
+        raise ConvergenceError(text, result, [])
+    warnings.warn(ConvergenceWarning(text), stacklevel=stacklevel)
+    return result, True
+
+
+def _share(x: float) -> str:
+    """A fraction as a percentage, or in powers of ten below 0.1 %."""
+    return f"{x:.1%}" if x >= 1e-3 else f"{x:.1e}"
 
 
 def checked_stability(stability) -> str:

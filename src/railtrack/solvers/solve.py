@@ -23,6 +23,7 @@ from .auto_harmonics import (
     DEFAULT_ACCURACY,
     WARM_START_ABOVE as WARM_START_ABOVE,
     WARN_TRUNCATION as WARN_TRUNCATION,
+    auto_stopped,
     first_system,
     next_system,
     truncation_warning,
@@ -33,9 +34,9 @@ from .guards import (
     checked_accuracy,
     checked_stability,
     checked_tol,
+    hold_to_accuracy,
     look_at_stability,
     require_scalar_fields,
-    truncation_limit,
 )
 from ..model.cell import SleeperCell
 from ..model.foundations import as_foundation
@@ -129,8 +130,13 @@ def solve(
     harmonics : int or "auto"
         m, the number of harmonics kept (eq. 19).  "auto" (default) picks
         the smallest m whose estimated truncation error is below `accuracy`
-        (`railtrack.solvers.truncation`); the paper uses m = 15.  An explicit m whose
-        estimated error exceeds 1 % warns with a `TruncationWarning`.
+        (`railtrack.solvers.truncation`); the paper uses m = 15.  Two rules:
+        "auto" promises `accuracy`, and where it stops short (m at its cap,
+        or its rounds spent) the result has ``converged=False``, its fields
+        kept, and a message saying m and the estimate (a `ConvergenceWarning`,
+        or `ConvergenceError` with ``strict``).  With an explicit m,
+        ``converged`` refers to the equations at that m, and an estimated
+        error above 1 % warns with a `TruncationWarning`.
     method : {"newton", "fixed-point", "analytic"}
     accuracy : float, optional
         For ``harmonics="auto"``: the largest estimated truncation error of
@@ -207,8 +213,8 @@ def solve(
     Returns
     -------
     Solution
-        With ``converged`` and ``truncation_error``.  A diverging iteration
-        is reported as ``converged=False`` with a message saying so.
+        With ``converged`` and ``truncation_error``.  A diverging iteration,
+        or "auto" short of `accuracy`, is ``converged=False``, the message says which.
 
     Raises
     ------
@@ -290,7 +296,7 @@ def solve(
                 break
             grown = next_system(passage, foundation, method, m, target, estimate, accuracy,
                                 outcome.coefficients, tail, spectrum)
-            if grown is None:
+            if grown is None or _round == AUTO_ROUNDS:   # the last round's m is the one solved
                 break
             m, spectrum, system, initial = grown
             target = m
@@ -301,31 +307,24 @@ def solve(
         if automatic:
             message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
                         f"estimated truncation error {estimate:.1e})")
-        limit = truncation_limit(automatic, accuracy)
-        if outcome.converged and np.isfinite(estimate) and estimate > limit:
-            warnings.warn(truncation_warning(passage, foundation, m, estimate, automatic),
-                          stacklevel=2)
+        if not automatic and outcome.converged and estimate > WARN_TRUNCATION:
+            warnings.warn(truncation_warning(passage, foundation, m, estimate), stacklevel=2)
         solution = Solution(
-            passage=passage,
-            foundation=foundation,
-            harmonics=system.harmonics,
-            coefficients=two_sided(outcome.coefficients),
-            method=method,
-            converged=outcome.converged,
-            iterations=iterations,
-            residual_history=outcome.residual_history,
-            message=message,
-            split=used_split,
-            samples=system.samples,
-            truncation_error=estimate,
-        )
+            passage=passage, foundation=foundation, harmonics=system.harmonics,
+            coefficients=two_sided(outcome.coefficients), method=method,
+            converged=outcome.converged, iterations=iterations,
+            residual_history=outcome.residual_history, message=message, split=used_split,
+            samples=system.samples, truncation_error=estimate)
         if strict and not solution.converged:
             raise convergence_error(method, outcome, solution, message)
+        solution, short = hold_to_accuracy(solution, automatic, accuracy, strict, stacklevel=3,
+                                           of="the peak sleeper displacement",
+                                           stopped=auto_stopped(m))
         judged = look_at_stability(solution, stability, stacklevel=4)
         if judged is not None:
             solution = dataclasses.replace(solution, stability=judged)
         budget_spent = max_iterations is not None and outcome.iterations >= max_iterations
-        if not solution.converged and not budget_spent:
+        if not solution.converged and not budget_spent and not short:
             # an explicit max_iterations that runs out is the caller's budget (the
             # paper's k = 100 fixed-point steps): converged=False says so, quietly
             warnings.warn(ConvergenceWarning(not_converged_advice(

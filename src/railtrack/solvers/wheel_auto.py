@@ -30,11 +30,13 @@ from .guards import (
     checked_accuracy,
     checked_stability,
     checked_tol,
+    hold_to_accuracy,
     refuse_unused,
     truncation_limit,
     warn_if_displaced,
 )
 from .wheel_newton import solve_wheels
+from . import wheel_rounds
 from .wheel_rounds import auto_wheels, wrap
 from .wheel_solution import WheelSolution
 from .wheel_truncation import wheel_truncation
@@ -130,7 +132,10 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
     rest, tol and accuracy, the arguments this path does not use (method
     other than "newton", initial, split, fallback: refused).  An explicit m
     gets the truncation estimate of `railtrack.solvers.wheel_truncation` and
-    a `TruncationWarning` above 1 %.  The quick stability look is not done
+    a `TruncationWarning` above 1 % (``converged`` refers to the equations at
+    that m).  harmonics="auto" promises `accuracy` (of Q): where it stops
+    short of it, at its cap or with no estimate, the result has
+    ``converged=False`` (`railtrack.solvers.guards.hold_to_accuracy`).  The quick stability look is not done
     for wheels (their Floquet multipliers are not computed), and
     ``stability="full"`` is refused: run `railtrack.simulate_time_domain`
     with ``wheel=`` from this state instead.
@@ -182,9 +187,7 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
         if samples is not None:
             raise ValueError("samples needs an explicit harmonics=m; 'auto' chooses m itself")
         result = auto_wheels(passage, cell, wheel, profile, groups, accuracy, tol, iterations)
-        text = (f"harmonics='auto' stopped at m = {result.harmonics}: the contact force's "
-                f"truncation error is estimated at {result.truncation_error:.1%} of Q (the "
-                f"message says how)")
+        text = ""
     else:
         if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) \
                 or harmonics < groups:
@@ -200,6 +203,10 @@ def solve_track_wheels(track, train, support, wheel, profile=smooth_rail, harmon
         text = (f"harmonics={result.harmonics}: the estimated truncation error of the contact "
                 f"force is {result.truncation_error:.1%} of Q; pass a larger harmonics")
     budget_spent = max_iterations is not None and result.iterations >= iterations
+    stopped = (f"'auto' goes up to m = {wheel_rounds.MAX_HARMONICS} with wheels; the message "
+               "lists every m it tried")
+    result, short = hold_to_accuracy(result, automatic, accuracy, strict, of="Q",
+                                     stopped=stopped)
     warn_if_displaced(result)
-    return report(result, strict, truncation_limit(automatic, accuracy), text,
-                  quiet=budget_spent)
+    return result if short else report(result, strict, truncation_limit(automatic, accuracy),
+                                       text, quiet=budget_spent)

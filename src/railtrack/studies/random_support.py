@@ -28,8 +28,10 @@ pads at the same m, so the cell's operators are built once per m and all
 draws are solved as one batch (`railtrack.studies.random_support_batch`):
 m is what "auto" picks for the cell of the mean factor, every draw gets
 its own residual and truncation estimate, and only the draws that miss the
-accuracy are solved again at a larger m.  Other laws are solved draw by
-draw (`railtrack.solve` for a cell).  The draws can be spread over any
+accuracy are solved again at a larger m; a draw the batch leaves short of
+the accuracy at its last level is solved alone by `railtrack.solve`, whose
+verdict it takes (``converged=False`` where "auto" falls short there too).
+Other laws are solved draw by draw (`railtrack.solve` for a cell).  The draws can be spread over any
 ``concurrent.futures`` executor (a Dask client too) with the same results,
 and a progress bar (``tqdm``) is shown for large studies.
 """
@@ -191,11 +193,12 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
                              executor=executor, progress=shown)
         # cell_verdict's rule for a cell on linear laws: stable once converged
         verdicts = np.where(found["converged"], "stable", "unknown").astype("<U8")
-        _warn_truncation(found, harmonics)
+        short = _warn_truncation(found, harmonics)
         values = (found["seat"], found["moment"], found["converged"], found["harmonics"])
         values += (verdicts,)
-        # a draw the batch did not converge is solved alone, as `railtrack.solve` would
-        for k in np.flatnonzero(~found["converged"]):
+        # a draw the batch did not converge, or where "auto" fell short of its accuracy,
+        # is solved alone: `railtrack.solve` decides (a failure, converged=False, if short)
+        for k in np.flatnonzero(~found["converged"] | short):
             row = draw_chunk(track, train, [draw_cell(base, factors[k])], harmonics,
                               stability)
             for array, value in zip(values, row):
@@ -222,14 +225,21 @@ def random_support(track, train, foundation, *, sleepers: int = 30, variation: f
     return result
 
 
-def _warn_truncation(found: dict, harmonics) -> None:
-    """One `TruncationWarning` for the converged draws whose estimate exceeds the limit."""
-    automatic = isinstance(harmonics, str)
-    limit = DEFAULT_ACCURACY if automatic else WARN_TRUNCATION
-    over = found["converged"] & (found["error"] > limit)
+def _warn_truncation(found: dict, harmonics) -> np.ndarray:
+    """The converged draws that "auto" left short of its accuracy (to be solved alone).
+
+    An explicit m: none, and one `TruncationWarning` for the converged draws
+    whose estimate exceeds 1 %.
+    """
+    over = found["converged"] & (found["error"] > (
+        DEFAULT_ACCURACY if isinstance(harmonics, str) else WARN_TRUNCATION))
+    if isinstance(harmonics, str):
+        return over
     if over.any():
         worst = int(np.nanargmax(np.where(over, found["error"], np.nan)))
         warnings.warn(TruncationWarning(
             f"{int(over.sum())} of {over.size} draws have an estimated truncation error above "
-            f"{limit:.1%} of their largest sleeper peak (worst {found['error'][worst]:.1%} at "
-            f"harmonics={found['harmonics'][worst]}); pass a larger harmonics"), stacklevel=3)
+            f"{WARN_TRUNCATION:.1%} of their largest sleeper peak (worst "
+            f"{found['error'][worst]:.1%} at harmonics={found['harmonics'][worst]}); pass a "
+            "larger harmonics"), stacklevel=3)
+    return np.zeros_like(over)

@@ -12,9 +12,10 @@ and each member's estimated truncation error.
 members spread over the sweep, every member's truncation error is then
 estimated (`railtrack.solvers.batch.batch_truncation`), and while the worst
 converged member misses the accuracy, m grows to what its spectrum needs
-and the sweep is solved again, from the previous solutions.  An explicit m
-is kept, and warns (`railtrack.TruncationWarning`) if a member's estimate
-exceeds 1 %.
+and the sweep is solved again, from the previous solutions; a member still
+short of the accuracy where "auto" stops is a failure (``converged=False``,
+as in `railtrack.solve`).  An explicit m is kept, and warns
+(`railtrack.TruncationWarning`) if a member's estimate exceeds 1 %.
 
 **Size.**  The members are solved in blocks of `BLOCK`, so that the working
 memory does not grow with the sweep; the results themselves (2m + 1 complex
@@ -69,7 +70,8 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
     harmonics : int or "auto"
         m, the same for every member.  "auto" (default): the smallest m for
         which every converged member's estimated truncation error is below
-        `accuracy` (module docstring).  An explicit m (the paper's is 15)
+        `accuracy` (module docstring); a member still above it where "auto"
+        stops is returned with ``converged=False``.  An explicit m (the paper's is 15)
         warns with a `railtrack.TruncationWarning` if a member's estimate
         exceeds 1 %.
     accuracy : float, optional
@@ -167,7 +169,7 @@ def sweep(track: Track, train: Train, foundation, harmonics: int | str = "auto",
         start[:, : m + 1] = result.coefficients[:, m:]
         m = grown
         result = _solve(m, None, start, automatic, **run)
-    warn_members(result, automatic, accuracy, tuple(values))
+    result = warn_members(result, automatic, accuracy, tuple(values))
     verdicts = {} if stability == "off" else dict(zip(
         ("stable", "dominant_multiplier"), member_stability(result, values, stability)))
     return dataclasses.replace(result, values={k: np.array(v, dtype=float)

@@ -136,27 +136,40 @@ def rows(value, index: np.ndarray, size: int):
     return dataclasses.replace(value, **changes) if changes else value
 
 
-def warn_members(result: Sweep, automatic: bool, accuracy: float, swept: tuple) -> None:
-    """The sweep's warnings: unconverged members, and truncation above the limit."""
+def warn_members(result: Sweep, automatic: bool, accuracy: float, swept: tuple) -> Sweep:
+    """The sweep's warnings: unconverged members, and truncation above the limit.
+
+    With harmonics="auto", a member converged at the last m whose estimate
+    misses `accuracy` (or has none) is a failure, as in `railtrack.solve`
+    (`railtrack.solvers.guards.hold_to_accuracy`): the sweep returned has it
+    ``converged=False``, its coefficients and estimate kept, and the one
+    `ConvergenceWarning` counts it.
+    """
+    short = automatic & result.converged & ~(result.truncation_error <= accuracy)
+    if short.any():
+        result = dataclasses.replace(result, converged=result.converged & ~short)
     failed = int((~result.converged).sum())
     if failed:
         first = int(np.flatnonzero(~result.converged)[0])
         hint = (" Newton stalls near folds of the response in speed: rt.continuation follows "
                 "such a branch through them." if "speed" in swept else "")
+        fell = (f" {int(short.sum())} of them are solved at m = {result.harmonics}, but "
+                f"harmonics='auto' fell short of accuracy = {accuracy:.1e} there (estimates up "
+                f"to {np.nanmax(np.where(short, result.truncation_error, np.nan)):.1e}): pass "
+                "an explicit larger harmonics or loosen accuracy." if short.any() else "")
         warnings.warn(ConvergenceWarning(
             f"{failed} of {len(result)} members of the sweep did not converge (the first is "
-            f"member {first}); their coefficients are not solutions (Sweep.converged).{hint}"),
-            stacklevel=3)
+            f"member {first}); their coefficients are not solutions (Sweep.converged).{fell}"
+            f"{hint}"), stacklevel=3)
     errors = np.where(result.converged, result.truncation_error, np.nan)
     limit = accuracy if automatic else WARN_TRUNCATION
     if np.any(errors > limit):
         worst = int(np.nanargmax(errors))
-        advice = ("'auto' stopped growing m; pass a larger harmonics" if automatic
-                  else "pass a larger harmonics or use 'auto'")
         warnings.warn(TruncationWarning(
             f"harmonics={result.harmonics}: {int(np.sum(errors > limit))} member(s) of the sweep "
             f"have an estimated truncation error above {limit:.0%}, up to {errors[worst]:.1%} "
-            f"at member {worst} ({advice})"), stacklevel=3)
+            f"at member {worst} (pass a larger harmonics or use 'auto')"), stacklevel=3)
+    return result
 
 
 def solve_block(passage: Passage, law, size: int, m: int, samples, tol: float,

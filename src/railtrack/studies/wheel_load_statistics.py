@@ -18,9 +18,11 @@ quantiles at (1 -+ p) / 2), beside Q -+ 1, 2, 3 sigma (Q the static
 load), which bound the same fractions if P is normal (Eisenmann's reading,
 `railtrack.equations.eisenmann`).  Realisations that did not converge are
 counted in ``converged`` and left out of the pooled values, never dropped
-unseen; solves whose truncation estimate stays above the accuracy
-(``harmonics="auto"`` stopped at its cap, as where the wheels leave the
-rail) are kept, counted in ``truncation`` and warned about once.
+unseen; so are the solves that ``harmonics="auto"`` leaves short of its
+accuracy (stopped at its cap, as where the wheels leave the rail: a
+failure of `railtrack.solve`, ``converged=False``), their estimate kept in
+``truncation``.  An explicit m whose estimate exceeds the accuracy is kept
+in the pool and warned about once.
 
 The ride over the smooth rail (one more solve) is kept too: on a sleepered
 track the wheel load varies as the wheels pass the sleepers even without
@@ -239,10 +241,11 @@ def wheel_load_statistics(track, foundation, vehicle: Vehicle, spectrum, speed: 
     if not pooled:
         raise RuntimeError(f"none of the {count} realisations converged: no statistics")
     if not converged.all():
-        warnings.warn(f"{int(np.sum(~converged))} of {count} realisations did not converge; "
-                      f"they are left out of the pooled values (see .converged)",
+        warnings.warn(f"{int(np.sum(~converged))} of {count} realisations did not converge "
+                      f"(or harmonics='auto' fell short of its accuracy); they are left out "
+                      f"of the pooled values (see .converged, .truncation and .harmonics)",
                       ConvergenceWarning, stacklevel=2)
-    coarse = int(np.sum(truncation > DEFAULT_ACCURACY))
+    coarse = int(np.sum(converged & (truncation > DEFAULT_ACCURACY)))
     if coarse:
         warnings.warn(f"{coarse} of {count} realisations kept a truncation error above "
                       f"{DEFAULT_ACCURACY:.1%} of Q (largest {np.nanmax(truncation):.1%}; see "
