@@ -160,6 +160,8 @@ def wheel_residual(passage: Passage, cell, wheel, profile, system: WheelSystem,
 
     Parameters
     ----------
+    profile : callable or ndarray
+        r(x) [m], or its harmonics under the wheels (`profile_harmonics`).
     coefficients : ndarray, shape (N, m+1)
         c_{j,n} [m].
     forces : ndarray, shape (K, lmax)
@@ -248,10 +250,14 @@ def compression(passage: Passage, profile, system: WheelSystem, fluctuation: np.
                 lift: np.ndarray) -> np.ndarray:
     """delta_k(t) [m] on the AFT samples from its harmonics p = grid (K, lmax) and y_k.
 
-    The profile enters through its harmonics up to m (`profile_harmonics`).
+    The profile enters through its harmonics up to m: ``profile`` is r(x), or
+    those harmonics already read by `profile_harmonics` (a solve reads them
+    once: a random rail's sum over its wavenumbers took a third of a solve
+    when read at every residual).
     """
     samples = system.samples
-    rail_top = profile_harmonics(passage, profile, system.grid, samples)
+    rail_top = profile if isinstance(profile, np.ndarray) else profile_harmonics(
+        passage, profile, system.grid, samples)
     spectrum = np.zeros((fluctuation.shape[0], samples // 2 + 1), dtype=complex)
     spectrum[:, system.grid] = (fluctuation + rail_top[:, 1:]) * samples
     return (np.fft.irfft(spectrum, samples, axis=-1) + np.asarray(lift)[:, None]

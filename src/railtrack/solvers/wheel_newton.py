@@ -35,6 +35,7 @@ from ..equations.cell_harmonic_balance import tangent_spectrum
 from ..equations.harmonic_balance import default_samples
 from ..equations.wheel_harmonic_balance import (
     compression,
+    profile_harmonics,
     wheel_loads,
     wheel_residual,
     wheel_system,
@@ -136,6 +137,7 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
     m = int(harmonics)
     samples = default_samples(m) if samples is None else int(samples)
     system = wheel_system(passage, cell, wheel, m, samples)
+    seen = profile_harmonics(passage, profile, system.grid, samples)   # read once a solve
     k_w, lmax = len(passage.axle_positions), system.grid.size
     loads = np.asarray(passage.axle_loads, dtype=float)
     scale = float(np.max(loads))
@@ -161,7 +163,7 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
                            extra_load=wheel_loads(system, forces),
                            initial=start, tol=SLEEPERS_TOL)
         c = inner.coefficients[:, m:]
-        _, contacts, delta, hertz = wheel_residual(passage, cell, wheel, profile, system,
+        _, contacts, delta, hertz = wheel_residual(passage, cell, wheel, seen, system,
                                                    c, forces, y,
                                                    inner.foundation_harmonics[:, m:])
         packed = np.concatenate([contacts[:, :1].real, contacts[:, 1:].real,
@@ -250,7 +252,7 @@ def solve_wheels(passage: Passage, cell, wheel, profile, harmonics: int, *,
                f"after {steps} steps ({products} GMRES products); "
                f"sleepers: {sleepers.message}")
     # delta's own harmonics, without the profile and the lift: rail under the wheel - z
-    moving = delta - compression(passage, profile, system, np.zeros_like(forces), y)
+    moving = delta - compression(passage, seen, system, np.zeros_like(forces), y)
     harmonics = (np.fft.rfft(moving, axis=-1) / samples)[:, system.grid]
     return WheelNewton(sleepers.coefficients, system.grid, forces, y, harmonics, times, delta,
                        hertz, converged, norm, steps,
