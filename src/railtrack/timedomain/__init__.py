@@ -1,6 +1,7 @@
 """The time-domain ring: an independent check of the harmonic-balance results.
 
-One wagon length of track closed into a ring of finite elements (`fem`),
+One wagon length of track closed into a ring of finite elements (`fem`;
+its layout `ring_layout`, the wheels' positions and loads `ring_loads`),
 stepped by Newmark's scheme (`newmark`) until each period repeats the last
 (`simulation`, whose `simulate_time_domain` is the entry point); the time
 step and its error (`timestep`), the run's cost estimated beforehand
