@@ -12,7 +12,7 @@ import pytest
 
 import railtrack as rt
 import railtrack.studies.branch_stability as branch_stability
-import railtrack.studies.continuation as continuation
+import railtrack.studies.continuation_trace as continuation_trace
 import railtrack.studies.ramp as ramp
 import railtrack.timedomain.simulation as simulation
 from railtrack.solvers.progress import PROGRESS_WORK
@@ -75,7 +75,7 @@ def test_the_bar_counts_what_was_done(branch, capsys):
 
 def test_large_studies_show_the_bar_by_default(branch, monkeypatch, capsys):
     # the thresholds lowered: the default (None) shows the bar where the work is large
-    monkeypatch.setattr(continuation, "PROGRESS_WORK", 1.0)
+    monkeypatch.setattr(continuation_trace, "PROGRESS_WORK", 1.0)
     monkeypatch.setattr(branch_stability, "PROGRESS_WORK", 1.0)
     monkeypatch.setattr(simulation, "LONG_RUN_SECONDS", 0.0)
     monkeypatch.setattr(ramp, "LONG_RUN_SECONDS", 0.0)
