@@ -5,9 +5,10 @@ branch R(x, p) = 0 of eq. (17) in the scaled unknowns u = (x / X, p / P)
 (Keller 1977): a predictor along the tangent, a corrector on the bordered
 system (`railtrack.solvers.arclength`), a step that grows after a fast
 corrector and shrinks after a failed one or one whose tangent turns too
-far; a turning of dp/ds locates a fold, and the branch lands exactly on the
-end value.  `railtrack.studies.continuation` chooses m and warns; the
-steps that stand alone are in `railtrack.studies.continuation_steps`.
+far; a change of sign of dp/ds locates a fold, and the branch lands
+exactly on the end value.  `railtrack.studies.continuation` chooses m and
+warns; the steps that stand alone are in
+`railtrack.studies.continuation_steps`.
 """
 
 from __future__ import annotations
