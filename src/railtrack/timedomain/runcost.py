@@ -120,9 +120,12 @@ def _duration(seconds: float) -> str:
 
 
 def check_run_cost(
-    n_sleepers: int, elements_per_span: int, steps_per_period: int, max_periods: int
+    n_sleepers: int, elements_per_span: int, steps_per_period: int, max_periods: int,
+    stacklevel: int = 3,
 ) -> RunCost:
     """Refuse a run that would exhaust memory; warn about one that would take long.
+
+    The warning's `stacklevel` (default: the caller of the function that calls this).
 
     Raises
     ------
@@ -153,6 +156,6 @@ def check_run_cost(
             f"{_duration(cost.seconds(max_periods))} for max_periods = {max_periods}); "
             "fewer steps or elements would be faster",
             LongRunWarning,
-            stacklevel=3,
+            stacklevel=stacklevel,
         )
     return cost

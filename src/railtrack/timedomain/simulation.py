@@ -28,36 +28,24 @@ or from an explicit ring state (`railtrack.timedomain.ring_state`): that is how
 and how `railtrack.studies.ramp.speed_ramp` carries a steady state from speed
 to speed.
 
-The steps themselves are in `railtrack.timedomain.newmark`.
+The arguments are checked and the run built in
+`railtrack.timedomain.ring_setup`, the periods stepped in
+`railtrack.timedomain.ring_periods`, each step in `railtrack.timedomain.newmark`.
 """
 
 from __future__ import annotations
 
-import warnings
 from typing import Any
 
-import numpy as np
-
-from .fem import ring_mesh, sleepers_on_ring, wheel_load_entries
-from .ring_cell import ring_cell, ring_train
-from .ring_fields import SleeperRecorder
-from .ring_outputs import ring_outputs, watched_dofs
-from .ring_vehicle import attach_vehicle
-from .ring_wheels import attach_wheels, check_wheel_arguments
-from .ring_state import initial_state
-from ..model.cell import SleeperCell
-from ..model.foundations import as_foundation
-from .newmark import NewmarkStepper, NonFiniteLawError, instability_hint, reference_law
-from .runcost import LONG_RUN_SECONDS, TYPICAL_PERIODS, LongRunWarning, check_run_cost
-from .timestep import TimeStepWarning, check_step_error, check_steps_per_period
-from ..model.passage import Passage
-from .td_solution import TimeDomainSolution
 from ..model.track import Track
-from ..model.vehicle import Vehicle
 from ..model.train import Train
-from ..solvers.progress import progress_bar, show_progress
-from ..solvers.solution import ConvergenceWarning
 from ..solvers.threads import blas_threads
+from .newmark import NonFiniteLawError
+from .ring_periods import GROWTH_LIMIT, run_periods
+from .ring_setup import prepare_run
+from .runcost import LongRunWarning
+from .td_solution import TimeDomainSolution
+from .timestep import TimeStepWarning
 
 __all__ = [
     "TimeDomainSolution",
@@ -67,30 +55,6 @@ __all__ = [
     "NonFiniteLawError",
     "GROWTH_LIMIT",
 ]
-
-DEFAULT_TIMOSHENKO_ALPHA = 0.1
-"""HHT's alpha on a Timoshenko rail unless told (`simulate_time_domain`, issue 27)."""
-
-GROWTH_LIMIT = 1e4
-"""A sleeper deflection this many times the static one means the track is unstable."""
-
-
-_FINITE = (
-    ": the law must return finite forces and tangents for every w, w' the sleepers reach "
-    "(check its domain: a division, square root or logarithm of w?)"
-)
-
-
-def _when(passage: Passage, steps: int, n: int, periods: int) -> str:
-    """Where step n + 1 of period `periods` ends, for messages."""
-    t = (periods - 1 + (n + 1) / steps) * float(passage.period)
-    return f"at step {n + 1} of {steps} in period {periods} (t = {t:.6g} s)"
-
-
-def _require_count(name: str, value: Any) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
-        raise ValueError(f"{name} must be an integer >= 1; got {value!r}")
-    return int(value)
 
 
 def simulate_time_domain(
@@ -297,146 +261,9 @@ def simulate_time_domain(
     ((480, 30), array([0.57, 0.16, 0.59]))
     """
     with blas_threads(1):
-        passage = Passage(track, ring_train(train, wagons))
-        elements_per_span = _require_count("elements_per_span", elements_per_span)
-        steps_per_period = _require_count("steps_per_period", steps_per_period)
-        max_periods = _require_count("max_periods", max_periods)
-        min_periods = min(_require_count("min_periods", min_periods), max_periods)
-        max_newton_iterations = _require_count("max_newton_iterations", max_newton_iterations)
-        for name, value in (("tol", tol), ("newton_tol", newton_tol)):
-            if not np.isfinite(value) or value <= 0:
-                raise ValueError(f"{name} must be a finite number > 0; got {value!r}")
-        if warn_step_error is not None and not (np.isfinite(warn_step_error) and warn_step_error > 0):
-            raise ValueError(f"warn_step_error must be a finite number > 0 or None; got {warn_step_error!r}")
-        cost = check_run_cost(sleepers_on_ring(passage), elements_per_span, steps_per_period,
-                              max_periods)
-        # a bar exactly where LongRunWarning speaks (none in the book, which has no such run)
-        shown = show_progress(progress, cost.seconds(min(TYPICAL_PERIODS, max_periods))
-                              > LONG_RUN_SECONDS)
-        check_steps_per_period(passage, steps_per_period)
-        check_wheel_arguments(wheel, profile, start, train)
-        cell = None
-        if isinstance(foundation, SleeperCell):
-            n_ring = sleepers_on_ring(passage)
-            cell = ring_cell(foundation, n_ring, wagons, n_ring // wagons)
-            mesh = ring_mesh(passage, elements_per_span, cell.sleepers, timoshenko)
-            law, first_law = cell.law, foundation.foundations[0]
-            reference = cell.law.reference()
-            k0, pad = float(np.mean(reference[0])), float(np.mean(cell.pad_stiffness))
-        else:
-            law = first_law = foundation = as_foundation(foundation)
-            mesh = ring_mesh(passage, elements_per_span, timoshenko=timoshenko)
-            reference = k0, _ = reference_law(foundation)
-            pad = float(passage.pad_stiffness)
-        n_steps, dt = steps_per_period, float(passage.period) / steps_per_period
-        times = dt * np.arange(n_steps)
-        loads = wheel_load_entries(mesh, times)
-
-        # Newton's tolerance is relative to the mean static deflection: the load
-        # per sleeper 2 Q L / H on the pad and the reference foundation in series.
-        scale = float(passage.static_load_per_sleeper) * (1.0 / k0 + 1.0 / pad)
-        newton_abs = newton_tol * scale
-        weight = None if cell is None else cell.self_weight(mesh)
-
-        try:
-            u, v, a = initial_state(mesh, law, start, reference[0], newton_abs, max_newton_iterations,
-                                    weight)
-        except NonFiniteLawError as error:
-            raise NonFiniteLawError(f"{error}{_FINITE}") from None
-        if cell is None:
-            estimated, linearized_at = (passage, foundation), float(np.mean(u[mesh.sleeper_dofs]))
-        else:  # a linear stand-in: its tangent is the same at any w
-            estimated, linearized_at = cell.stand_in(passage, u[mesh.sleeper_dofs]), 0.0
-        step_error = check_step_error(*estimated, linearized_at, steps_per_period,
-                                      elements_per_span, warn_step_error)
-        if hht_alpha is None:
-            hht_alpha = 0.0 if timoshenko is None else DEFAULT_TIMOSHENKO_ALPHA
-        stepper = NewmarkStepper(mesh, law, reference, dt, loads, newton_abs, max_newton_iterations,
-                                 weight, hht_alpha)
-        if wheel is not None:
-            attach = attach_vehicle if isinstance(wheel, Vehicle) else attach_wheels
-            u, stepper = attach(stepper, wheel, profile, u, times, reference[0], wagons)
-        (stepper if wheel is None else stepper.stepper).start(u, v)
-        every_sleeper = cell is not None and not cell.uniform
-        recorder = SleeperRecorder(mesh, n_steps)
-
-        # Far beyond any track's deflection, and far below overflow in a cubic law.
-        bound = GROWTH_LIMIT * max(scale, float(np.max(np.abs(u[mesh.sleeper_dofs]))))
-        record = np.empty((n_steps, mesh.n_sleepers))
-        rail = np.empty(n_steps)
-        watched = watched_dofs(mesh)
-        states, rates = np.empty((n_steps, watched.size)), np.empty((n_steps, watched.size))
-        history = np.empty((max_periods, n_steps))
-        previous: np.ndarray | None = None
-        previous_all = np.empty_like(record)
-        changes: list[float] = []
-        converged = False
-        with progress_bar(shown, max_periods, f"ring, {n_steps} steps a period", "periods") as bar:
-            for periods in range(1, max_periods + 1):
-                for n in range(n_steps):
-                    record[n] = u[mesh.sleeper_dofs]
-                    rail[n] = u[mesh.rail_dofs[0]]
-                    states[n], rates[n] = u[watched], v[watched]
-                    recorder.record(n, u, v)
-                    try:
-                        u, v, a = stepper.step(u, v, a, (n + 1) % n_steps)
-                    except NonFiniteLawError as error:
-                        raise NonFiniteLawError(f"{error}, {_when(passage, n_steps, n, periods)}{_FINITE}") from None
-                    except RuntimeError as error:
-                        grown = float(np.max(np.abs(u[mesh.sleeper_dofs]))) / scale
-                        hint = f"; {instability_hint(law)}" if grown > 100.0 else ""
-                        raise RuntimeError(f"{error}, {_when(passage, n_steps, n, periods)}, the sleepers having "
-                                           f"reached {grown:.3g} times the static deflection{hint}") from None
-                    reached = float(np.max(np.abs(u[mesh.sleeper_dofs])))
-                    if not reached <= bound:  # also catches NaN
-                        raise RuntimeError(
-                            f"the response grew without bound in period {periods}: a sleeper reached "
-                            f"|w| = {reached:.3g} m, {reached / scale:.3g} times the static deflection scale "
-                            f"{scale:.3g} m, {_when(passage, n_steps, n, periods)}; {instability_hint(law)}"
-                        )
-                history[periods - 1] = record[:, 0]
-                current = history[periods - 1]
-                wheels_change = None if wheel is None else stepper.period_change()
-                if previous is not None:
-                    if every_sleeper:  # the differing sleepers may settle at different rates
-                        peak = max(float(np.max(np.abs(record))), np.finfo(float).tiny)
-                        changes.append(float(np.max(np.abs(record - previous_all))) / peak)
-                    else:
-                        peak = max(float(np.max(np.abs(current))), np.finfo(float).tiny)
-                        changes.append(float(np.max(np.abs(current - previous))) / peak)
-                    if wheels_change is not None:
-                        changes[-1] = max(changes[-1], wheels_change)
-                    converged = changes[-1] <= tol
-                bar.to(periods, f"change {changes[-1]:.1e}, tol {tol:g}" if changes else None)
-                if converged and periods >= min_periods:
-                    break
-                previous = current
-                if every_sleeper:
-                    previous_all[:] = record
-
-        if not converged and max_periods > min_periods:
-            last = f"{changes[-1]:.3g}" if changes else "not measured (one period)"
-            warnings.warn(ConvergenceWarning(
-                f"the ring's response did not repeat to tol = {tol:g} within max_periods = "
-                f"{max_periods} (last period's change {last}): raise max_periods, or check the "
-                "track's damping; the result has converged=False"), stacklevel=2)
-        return TimeDomainSolution(
-            times=times,
-            sleeper_displacement=record[:, 0].copy(),
-            rail_displacement=rail.copy(),
-            sleeper_displacements=record.copy(),
-            periods=periods,
-            converged=converged,
-            period_change=np.array(changes),
-            elements_per_span=elements_per_span,
-            steps_per_period=steps_per_period,
-            passage=passage,
-            foundation=foundation,
-            step_error=step_error,
-            **ring_outputs(mesh, first_law, states, rates),
-            sleeper_history=history[:periods].copy(),
-            final_state=(u.copy(), v.copy()),
-            **recorder.outputs(law, record),
-            wagons=int(wagons),
-            **({} if wheel is None else stepper.outputs()),
-        )
+        # called from here directly: their warnings point at this function's caller
+        run = prepare_run(track, train, foundation, elements_per_span, steps_per_period, tol,
+                          max_periods, start, min_periods, newton_tol, max_newton_iterations,
+                          warn_step_error, wagons, wheel, profile, timoshenko, hht_alpha,
+                          progress)
+        return run_periods(run)

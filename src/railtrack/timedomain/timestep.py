@@ -219,8 +219,10 @@ def steps_for_error(passage: Passage, steps_per_period: int, relative: float, ta
 
 
 def check_step_error(passage: Passage, foundation, w: float, steps: int, elements: int,
-                     warn_above: float | None) -> float:
+                     warn_above: float | None, stacklevel: int = 3) -> float:
     """`estimate_step_error` for the law linearized at w [m], warning above `warn_above`.
+
+    The warning's `stacklevel` (default: the caller of the function that calls this).
 
     A law with no positive stiffness or a negative damping there is
     linearized as `railtrack.timedomain.newmark.reference_law` does.
@@ -250,6 +252,6 @@ def check_step_error(passage: Passage, foundation, w: float, steps: int, element
             f"above warn_step_error = {warn_above:g}; use steps_per_period >= {wanted} for less "
             "(the error falls as dt^2), or pass a larger warn_step_error, or None, to accept it",
             TimeStepWarning,
-            stacklevel=3,
+            stacklevel=stacklevel,
         )
     return relative
