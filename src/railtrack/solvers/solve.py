@@ -145,10 +145,10 @@ def solve(
         used all of an explicit `max_iterations`: a budget the caller set).
     check_foundation : bool
         Refuse a law with negative stiffness or damping at rest
-        (`railtrack.model.foundations.check_foundation_at_rest`).  A softening law
-        whose stiffness at rest is positive passes; to solve a law that is
-        deliberately unstable at rest, pass False, and check the answer with
-        `railtrack.simulate_time_domain`.
+        (`railtrack.solvers.foundation_at_rest.check_foundation_at_rest`).  A
+        softening law whose stiffness at rest is positive passes; to solve a
+        law that is deliberately unstable at rest, pass False, and check the
+        answer with `railtrack.simulate_time_domain`.
     fallback : bool, optional
         One sleeper only (default True; a `SleeperCell` or wheels refuse it).
         Where Newton fails from its linear guess (no `initial` given), follow
