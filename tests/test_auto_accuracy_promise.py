@@ -18,7 +18,7 @@ import railtrack as rt
 import railtrack.solvers.wheel_rounds as rounds
 from railtrack.model.ground_protocol import WinklerGround
 from railtrack.solvers import auto_harmonics, cell_auto, ground_solve
-from railtrack.solvers import solve as solve_module
+from railtrack.solvers import sleeper_solve
 from railtrack.solvers.wheel_auto import wheel_cell
 from railtrack.solvers.wheel_newton import solve_wheels
 
@@ -67,7 +67,7 @@ def test_sleeper_auto_at_its_cap_fails_with_the_message():
 
 def test_sleeper_auto_out_of_rounds_fails_and_keeps_the_m_it_solved(monkeypatch):
     # one round only: the warm start at a quarter of the predicted m is the last level
-    monkeypatch.setattr(solve_module, "AUTO_ROUNDS", 0)
+    monkeypatch.setattr(sleeper_solve, "AUTO_ROUNDS", 0)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         result = rt.solve(TRACK, TRAIN, CUBIC, accuracy=1e-6, stability="off")

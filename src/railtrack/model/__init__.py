@@ -2,9 +2,10 @@
 
 `track` (rail, pads, sleepers; Table 1), `train` (wagon length, axles,
 loads, speed), `passage` (the train on the track, as the equations take
-it), `foundations` (eqs. 22, 24, 25 and any callable law), `gap` (a
-hanging sleeper's law), `cell` (N sleepers that differ, repeating along
-the track), `wheel` and `profile` (the wheel on the rail and the rail-top
+it), `foundations` (what a foundation law is, and `as_foundation`),
+`foundation_laws` (eqs. 22, 24, 25), `callable_foundation` (any callable
+law), `gap` (a hanging sleeper's law), `cell` (N sleepers that differ,
+repeating along the track), `wheel` and `profile` (the wheel on the rail and the rail-top
 profile), `irregularity` (the FRA and German spectra of the rail's
 vertical profile) and `random_profile` (a periodic rail drawn from one, or
 measured), `vehicle` (a bogie wagon's body, bogies and wheelsets),

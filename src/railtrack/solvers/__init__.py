@@ -1,8 +1,11 @@
 """The solvers of the harmonic-balance equations and the result they return.
 
-`solve` (the entry point: a method looked up in a table), `fixed_point`
+`solve` (the entry point: a method looked up in a table), `sleeper_solve`
+(its one sleeper on a rigid ground: the rounds of m, the result), `fixed_point`
 (the paper's eq. 21), `newton`, `batch` (Newton on many systems at once),
-`truncation` (how many harmonics: m = "auto"), `conditioning`, `diagnosis`,
+`truncation` (how many harmonics: the truncation error), `harmonics_needed`
+(m = "auto": predicted, then grown), `spectrum` (the linear coefficients
+of eq. 17 over n, computed once), `conditioning`, `diagnosis`,
 `arguments` (checks of the arguments), `foundation_at_rest`, `solution`
 (the `Solution`), `time_histories` (the Fourier series it sums and its
 rail at any (t, x)), `energy` (the work

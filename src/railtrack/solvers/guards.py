@@ -1,6 +1,6 @@
 """What every path of `railtrack.solve` decides alike (issue 27).
 
-`railtrack.solve` has three paths: one sleeper (`railtrack.solvers.solve`),
+`railtrack.solve` has three paths: one sleeper (`railtrack.solvers.sleeper_solve`),
 a `SleeperCell` (`railtrack.solvers.cell_auto.solve_track_cell`) and wheels
 (`railtrack.solvers.wheel_auto.solve_track_wheels`).  Each calls this module
 for what must not differ between them:

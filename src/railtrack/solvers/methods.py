@@ -15,20 +15,25 @@ from .newton import linear_guess
 __all__ = ["run_method", "check_method_arguments"]
 
 
-def check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split):
-    """Warn about the arguments `method` does not use; refuse samples/initial with "auto"."""
+def check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split,
+                           stacklevel: int = 3):
+    """Warn about the arguments `method` does not use; refuse samples/initial with "auto".
+
+    `stacklevel` is passed to `warnings.warn`: the default names the line
+    that called the caller of this function.
+    """
     if method == "analytic":
         ignored = [n for n, v in (("tol", tol), ("max_iterations", max_iterations),
                                   ("initial", initial)) if v is not None]
         if ignored:
             warnings.warn(f"{', '.join(ignored)} not used by method='analytic' (eq. 23 is exact)",
-                          stacklevel=3)
+                          stacklevel=stacklevel)
     if automatic and (samples is not None or initial is not None):
         raise ValueError("samples and initial need an explicit harmonics=m; "
                          "'auto' chooses m itself")
     if method != "fixed-point" and split is not None:
         warnings.warn(f"split is used by method='fixed-point' only; ignored by {method!r}",
-                      stacklevel=3)
+                      stacklevel=stacklevel)
     if split is not None and split != "auto":
         require_count("split (N0)", split, 0)
 

@@ -28,7 +28,8 @@ from ..equations.load import load_coefficients
 from ..equations.moment import kink_coefficients, kink_sum
 from ..equations.rail_field import rail_field_coefficients, seat_load_coefficients
 from ..equations.sleeper import rail_coefficients
-from .truncation import TAIL_FACTOR, _grid, _series, tail_coefficients, track_spectrum
+from .spectrum import TAIL_FACTOR, _grid, _series, track_spectrum
+from .truncation import tail_coefficients
 
 __all__ = ["OUTPUTS", "output_truncation_errors"]
 

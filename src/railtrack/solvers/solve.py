@@ -4,62 +4,41 @@
 * ``"fixed-point"``: the paper's iteration, eq. (21) (`railtrack.solvers.fixed_point`);
 * ``"analytic"``: eq. (23), for a `LinearFoundation` only (`railtrack.equations.linear`).
 
-`solve` checks its arguments, looks the method up in `METHODS`, runs it and
-packs the outcome into a `Solution`; how it chooses m is
-`railtrack.solvers.auto_harmonics`.  Not converging is a result
+`solve` sends a ground, wheels or a cell of sleepers their own ways
+(`railtrack.solvers.ground_solve`, `railtrack.solvers.wheel_auto`,
+`railtrack.solvers.cell_auto`); one sleeper's solve
+(`railtrack.solvers.sleeper_solve`) checks the arguments, looks the method
+up in `METHODS`, runs it and packs the outcome into a `Solution`; how it
+chooses m is `railtrack.solvers.auto_harmonics`.  Not converging is a result
 (``converged=False``), not an exception, unless ``strict=True``.
 """
 
 from __future__ import annotations
 
-import dataclasses
-import warnings
-
 import numpy as np
 
-from .arguments import require_count
 from .auto_harmonics import (
-    AUTO_ROUNDS,
+    AUTO_ROUNDS as AUTO_ROUNDS,
     DEFAULT_ACCURACY,
     WARM_START_ABOVE as WARM_START_ABOVE,
-    WARN_TRUNCATION as WARN_TRUNCATION,
-    auto_stopped,
-    first_system,
-    next_system,
-    truncation_warning,
+    WARN_TRUNCATION,
 )
-from .diagnosis import convergence_error
-from .guards import (
-    check_laws_at_rest,
-    checked_accuracy,
-    checked_stability,
-    checked_tol,
-    hold_to_accuracy,
-    look_at_stability,
-    require_scalar_fields,
-)
+from .guards import checked_stability
 from ..model.cell import SleeperCell
-from ..model.foundations import as_foundation
-from ..equations.harmonic_balance import HarmonicSystem, residual, residual_norm, two_sided
+from ..equations.harmonic_balance import HarmonicSystem, residual, residual_norm
 from ..equations.linear import analytic_coefficients
 from .fixed_point import SolverOutcome, iterate_fixed_point
-from .methods import check_method_arguments, run_method
 from .newton import iterate_newton
 from .cell_auto import solve_track_cell
 from .ground_solve import solve_on_ground
+from .sleeper_solve import DEFAULT_TOL as DEFAULT_TOL, solve_one_sleeper
 from .wheel_auto import solve_track_wheels
-from .conditioning import check_conditioning
-from .solution import ConvergenceWarning, Solution
-from .speed_path import not_converged_advice, speed_path
-from ..model.passage import Passage
+from .solution import Solution
 from ..model.track import Track
 from ..model.train import Train
 from .threads import blas_threads
-from .truncation import estimate_of
 
 __all__ = ["solve", "METHODS", "DEFAULT_ACCURACY", "WARN_TRUNCATION"]
-
-DEFAULT_TOL = 1e-10
 
 
 ANALYTIC_ROUND_OFF = 1e-8
@@ -166,10 +145,10 @@ def solve(
         used all of an explicit `max_iterations`: a budget the caller set).
     check_foundation : bool
         Refuse a law with negative stiffness or damping at rest
-        (`railtrack.model.foundations.check_foundation_at_rest`).  A softening law
-        whose stiffness at rest is positive passes; to solve a law that is
-        deliberately unstable at rest, pass False, and check the answer with
-        `railtrack.simulate_time_domain`.
+        (`railtrack.solvers.foundation_at_rest.check_foundation_at_rest`).  A
+        softening law whose stiffness at rest is positive passes; to solve a
+        law that is deliberately unstable at rest, pass False, and check the
+        answer with `railtrack.simulate_time_domain`.
     fallback : bool, optional
         One sleeper only (default True; a `SleeperCell` or wheels refuse it).
         Where Newton fails from its linear guess (no `initial` given), follow
@@ -258,76 +237,8 @@ def solve(
                                     initial=initial, strict=strict, stability=stability,
                                     check_foundation=check_foundation, split=split,
                                     fallback=fallback)
-        fallback = True if fallback is None else fallback
-        if method not in METHODS:
-            raise ValueError(f"method must be one of {sorted(METHODS)}; got {method!r}")
-        passage = Passage(track, train)
-        require_scalar_fields(track, train)
-        check_conditioning(passage)
-        automatic = isinstance(harmonics, str) and harmonics == "auto"
-        if not automatic:
-            require_count("harmonics", harmonics, 1)
-        check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split)
-        accuracy = checked_accuracy(accuracy, automatic)
-        tol = checked_tol(tol, DEFAULT_TOL)
-        if max_iterations is not None:
-            max_iterations = require_count("max_iterations", max_iterations, 0)
-        foundation = as_foundation(foundation)
-        check_laws_at_rest([foundation], [float(passage.pad_stiffness)],
-                           [float(passage.pad_damping)], check_foundation)
-
-        m, target, spectrum, system, initial = first_system(
-            passage, foundation, harmonics, automatic, method, accuracy, samples, initial)
-
-        iterations, path = 0, None
-        for _round in range(AUTO_ROUNDS + 1):
-            outcome, used_split, note = run_method(METHODS, method, system, tol, max_iterations,
-                                                   split, initial)
-            iterations += outcome.iterations
-            if (fallback and method == "newton" and not outcome.converged and initial is None
-                    and max_iterations is None and path is None):
-                path = speed_path(system, tol, 100)
-                if path.outcome is not None:
-                    outcome = path.outcome._replace(message=f"{path.outcome.message}; "
-                                                    f"{path.describe(float(passage.speed))}")
-                    iterations += outcome.iterations
-            estimate, tail = estimate_of(system, outcome.coefficients, spectrum)
-            if not automatic or not outcome.converged or tail is None:
-                break
-            grown = next_system(passage, foundation, method, m, target, estimate, accuracy,
-                                outcome.coefficients, tail, spectrum)
-            if grown is None or _round == AUTO_ROUNDS:   # the last round's m is the one solved
-                break
-            m, spectrum, system, initial = grown
-            target = m
-
-        message = outcome.message + (f"; {note}" if note and not outcome.converged else "")
-        if path is not None and path.outcome is None:
-            message += f"; {path.describe(float(passage.speed))}"
-        if automatic:
-            message += (f"; harmonics='auto' chose m = {m} ({iterations} steps in all, "
-                        f"estimated truncation error {estimate:.1e})")
-        if not automatic and outcome.converged and estimate > WARN_TRUNCATION:
-            warnings.warn(truncation_warning(passage, foundation, m, estimate), stacklevel=2)
-        solution = Solution(
-            passage=passage, foundation=foundation, harmonics=system.harmonics,
-            coefficients=two_sided(outcome.coefficients), method=method,
-            converged=outcome.converged, iterations=iterations,
-            residual_history=outcome.residual_history, message=message, split=used_split,
-            samples=system.samples, truncation_error=estimate)
-        if strict and not solution.converged:
-            raise convergence_error(method, outcome, solution, message)
-        solution, short = hold_to_accuracy(solution, automatic, accuracy, strict, stacklevel=3,
-                                           of="the peak sleeper displacement",
-                                           stopped=auto_stopped(m))
-        judged = look_at_stability(solution, stability, stacklevel=4)
-        if judged is not None:
-            solution = dataclasses.replace(solution, stability=judged)
-        budget_spent = max_iterations is not None and outcome.iterations >= max_iterations
-        if not solution.converged and not budget_spent and not short:
-            # an explicit max_iterations that runs out is the caller's budget (the
-            # paper's k = 100 fixed-point steps): converged=False says so, quietly
-            warnings.warn(ConvergenceWarning(not_converged_advice(
-                method, message, passage, system.harmonics, stalled="line search" in outcome.message
-                or path is not None)), stacklevel=2)
-        return solution
+        return solve_one_sleeper(track, train, foundation, harmonics, method, methods=METHODS,
+                                 accuracy=accuracy, tol=tol, max_iterations=max_iterations,
+                                 split=split, samples=samples, initial=initial, strict=strict,
+                                 check_foundation=check_foundation, fallback=fallback,
+                                 stability=stability)
