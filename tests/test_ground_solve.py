@@ -182,6 +182,19 @@ def test_what_a_ground_does_not_take_is_refused_by_name():
         rt.solve(TRACK, TRAIN, LAWS["linear"], ground=rt.WinklerGround(2e8, 0.9))
 
 
+def test_a_split_or_an_accuracy_not_used_on_a_ground_warns_at_the_callers_line():
+    # Newton takes no split and an explicit m no accuracy: each warns, and the
+    # warning names the line that called solve (this file), as without a ground.
+    ground = rt.WinklerGround(2e8, A)
+    for kwargs, text in ((dict(split=3), "split is used"),
+                         (dict(accuracy=1e-3), "accuracy is used")):
+        with pytest.warns(UserWarning, match=text) as caught:
+            rt.solve(TRACK, TRAIN, LAWS["linear"], M, ground=ground, **kwargs)
+        ours = [w for w in caught if text in str(w.message)]
+        assert len(ours) == 1 and ours[0].filename == __file__, \
+            [(w.filename, w.lineno) for w in ours]
+
+
 @pytest.mark.parametrize("name", ["linear", "cubic"])
 def test_energy_balance_on_a_damped_ground(name):
     # the wheel loads' work = pad + law + what the ground takes: a conservation law that

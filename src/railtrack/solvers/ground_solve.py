@@ -125,8 +125,9 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
     automatic = isinstance(harmonics, str) and harmonics == "auto"
     if not automatic:
         require_count("harmonics", harmonics, 1)
-    check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split)
-    accuracy = checked_accuracy(accuracy, automatic)
+    check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split,
+                           stacklevel=4)
+    accuracy = checked_accuracy(accuracy, automatic, stacklevel=4)
     tol = checked_tol(tol, 1e-10)
     if max_iterations is not None:
         max_iterations = require_count("max_iterations", max_iterations, 0)
