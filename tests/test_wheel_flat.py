@@ -7,6 +7,7 @@ follows any profile and presses with its static load, and the time-domain
 ring with the same flat.
 """
 
+import re
 import warnings
 
 import numpy as np
@@ -53,7 +54,7 @@ def test_a_depth_typed_in_millimetres_warns():
     with pytest.warns(PlausibilityWarning, match="WheelFlat.depth"):
         rt.WheelFlat(0.5, 0.1, 3.0)
     with pytest.warns(PlausibilityWarning, match="WheelFlat.circumference"):
-        rt.WheelFlat(0.5e-3, 0.1, 3000.0)
+        rt.WheelFlat(0.5e-3, 0.01, 0.1)  # a radius of 16 mm
 
 
 def test_a_circumference_off_the_sleeper_pattern_is_refused():
@@ -130,3 +131,39 @@ def test_harmonic_balance_p1_of_a_flat_agrees_with_the_ring():
     assert p[1].max() > 1.8 * q  # the flat's blow, on the flat wheel above all
     assert p[1].max() - q > 5 * (p[0].max() - q)
     assert abs(p[1].max() - ring[1]) < s.truncation_error * q + ring_error
+
+
+def test_a_circumference_typed_in_cm_or_mm_is_refused_before_any_solve():
+    # 300 m would be solved as a train of 17 wagons, 3000 m as 167: memory runs out
+    for typed in (300.0, 3000.0):
+        with pytest.raises(ValueError, match="cm or mm"), rt.plausibility("ignore"):
+            rt.WheelFlat(0.5e-3, 0.1, typed)
+
+
+def test_a_flat_length_typed_in_mm_is_named_before_the_length_check():
+    with pytest.warns(PlausibilityWarning, match="WheelFlat.length"):
+        with pytest.raises(ValueError, match="shorter than its period"):
+            rt.WheelFlat(0.5e-3, 60.0, 3.0)
+
+
+def test_the_period_error_names_the_circumferences_that_fit():
+    # 920 mm wheel, 0.6 m spacings, 18 m wagon: 3.0 m (5 spacings, 6 a wagon) is nearest
+    track, train = rt.Track.ballasted(), rt.Train.paper(speed=30.0)
+    flat = rt.WheelFlat(0.5e-3, 0.1, np.pi * 0.92, wheel=1)
+    with pytest.raises(ValueError, match=r"nearest are 3 m and 3\.6 m"):
+        rt.solve(track, train, rt.LinearFoundation.ballasted(), 600,
+                 wheel=rt.Wheel(600.0), profile=flat)
+
+
+def test_extremes_and_the_repr_read_the_flats_blow_as_a_fine_grid_does():
+    track, train = rt.Track.ballasted(), rt.Train.paper(speed=30.0)
+    flat = rt.WheelFlat(0.5e-3, 0.1, 3.0, wheel=1, centre=0.3)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the truncation estimate at m = 600
+        s = rt.solve(track, train, rt.LinearFoundation.ballasted(), 600,
+                     wheel=rt.Wheel(600.0), profile=flat)
+    fine = float(_peaks(s, 200_000)[1].max())
+    assert s.extremes()["max"][1] == pytest.approx(fine, rel=2e-3)
+    shown = float(re.search(r"contact force \[kN\]: max ([0-9.]+)", repr(s)).group(1))
+    assert shown * 1e3 == pytest.approx(fine, rel=2e-3)  # 4 m samples read 0.6 % low
+    assert "WheelFlat on wheel 1" in repr(s)

@@ -30,11 +30,11 @@ def _validate(dip, size: str, unit: str, what: str) -> None:
     require_positive("length", dip.length, "m")
     require_positive("period", dip.period, "m")
     require_finite("centre", dip.centre, "m")
+    check_plausible(dip)           # first, so that a unit slip is named before the error below
     if dip.length >= dip.period:
-        raise ValueError(f"{what} ({dip.length} m) must be shorter than its "
-                         f"period ({dip.period} m)")
+        raise ValueError(f"{what} ({dip.length:g} m) must be shorter than its "
+                         f"period ({dip.period:g} m)")
     as_float64(dip)
-    check_plausible(dip)
 
 
 def _from_nearest(dip, x) -> np.ndarray:

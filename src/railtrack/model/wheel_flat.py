@@ -27,7 +27,11 @@ import numpy as np
 
 from .profile import _from_nearest, _validate, cosine_dip, cosine_slope
 
-__all__ = ["WheelFlat", "sagitta", "felt_by"]
+__all__ = ["WheelFlat", "sagitta", "felt_by", "LARGEST_CIRCUMFERENCE"]
+
+LARGEST_CIRCUMFERENCE = 10.0
+"""Largest wheel circumference accepted [m]: larger than any railway wheel's
+(steam locomotives' driving wheels reach about 2.3 m across, 7.2 m around)."""
 
 
 def sagitta(chord: float, radius: float) -> float:
@@ -94,6 +98,12 @@ class WheelFlat:
                              f"got {self.wheel!r}")
         wheel = int(self.wheel)
         _validate(self, "depth", "m", "a flat's length")
+        if self.circumference > LARGEST_CIRCUMFERENCE:
+            # a period of many wagons would be solved as one long train: refuse the slip
+            raise ValueError(f"a wheel's circumference of {self.circumference:g} m is no "
+                             f"railway wheel's (at most {LARGEST_CIRCUMFERENCE:g} m, a wheel "
+                             f"3 m across): cm or mm? The circumference is 2 pi R in metres, "
+                             f"e.g. 3.0 for R = 0.477 m")
         object.__setattr__(self, "wheel", wheel)       # kept an index, not a float
 
     @property

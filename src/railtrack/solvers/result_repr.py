@@ -24,6 +24,7 @@ import numpy as np
 
 from ..equations.rail_field import seat_load_coefficients
 from .result_protocol import period_samples
+from .wheel_extremes import peak_samples
 
 __all__ = ["render_text", "render_html", "solution_rows", "cell_rows", "wheel_rows",
            "floquet_rows", "result_repr", "result_html", "ShortRepr", "case_text", "law_text",
@@ -179,7 +180,8 @@ def cell_rows(c) -> tuple[str, Rows]:
 def wheel_rows(s) -> tuple[str, Rows]:
     """Title and rows of a `railtrack.WheelSolution`."""
     n = period_samples(s)
-    t = np.linspace(0.0, s.period, n, endpoint=False)
+    peaks = peak_samples(s, n)           # a short blow must not fall between samples
+    t = np.linspace(0.0, s.period, peaks, endpoint=False)
     contact = safe(lambda: s.contact_force(t))
     w, rail, seat, force = _cell_histories(s.sleepers, n)
     loads = np.asarray(s.passage.axle_loads, dtype=float)
@@ -193,14 +195,17 @@ def wheel_rows(s) -> tuple[str, Rows]:
                        f"under a Vehicle (body {float(wheel.body_mass):.4g} kg), ")
                       + f"m_w = {float(wheel.unsprung_mass):.4g} kg, C_H = "
                       f"{float(wheel.hertz_constant):.3g} N/m^1.5, profile "
-                      f"{type(s.profile).__name__}"),
+                      f"{type(s.profile).__name__}"
+                      + (f" on wheel {s.profile.wheel}" if isinstance(
+                          getattr(s.profile, "wheel", None), int) else "")),
             ("foundation", law_text(s.sleepers.cell.foundations)), ("solve", solve_text(s)),
             ("contact force [kN]", extent(contact, KN, 2, "max", "wheel")),
             ("dynamic factor", ("n/a" if factor is None or off is None else
                                 f"max {np.max(factor):.3f}; off the rail "
                                 f"{np.max(off):.1%} of the period at most")),
             *sleeper_rows(w, rail, seat, force)]
-    return title, rows + [("extremes over", f"{n} times of one period T = {s.period:.4g} s")]
+    return title, rows + [("extremes over", f"{n} times of one period T = {s.period:.4g} s "
+                                            f"(the contact force: {peaks})")]
 
 
 def _verdict(floquet) -> str:

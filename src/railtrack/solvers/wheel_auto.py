@@ -69,6 +69,18 @@ def wagons_in_period(profile, train) -> int:
     return whole if whole > 1 and abs(ratio - whole) <= 1e-9 * ratio else 1
 
 
+def _fitting_periods(profile, span: float, wagon: float) -> str:
+    """For a wheel flat: the circumferences near its own that fit (whole spacings dividing H)."""
+    if getattr(profile, "circumference", None) is None:
+        return ""
+    fits = [k * span for k in range(1, int(round(wagon / span)) + 1)
+            if abs(wagon / (k * span) - round(wagon / (k * span))) <= 1e-9]
+    near = sorted(fits, key=lambda c: abs(c - float(profile.circumference)))[:2]
+    return (f"; a wheel flat's circumference must be both, on L = {span:g} m and H = "
+            f"{wagon:g} m: the nearest are {' and '.join(f'{c:g} m' for c in sorted(near))} "
+            f"(chapter 17: P1 barely depends on it)")
+
+
 def wheel_cell(passage: Passage, support, profile) -> SleeperCell:
     """The cell a law and a profile need, or ``support`` itself if it is a `SleeperCell`.
 
@@ -95,13 +107,15 @@ def wheel_cell(passage: Passage, support, profile) -> SleeperCell:
         period = getattr(profile, "period", None)
         sleepers = 1 if period is None else int(round(float(period) / span))
         if period is not None and (sleepers < 1 or abs(sleepers * span - period) > 1e-9 * wagon):
-            raise ValueError(f"the profile's period ({period} m) must be a whole number of "
-                             f"sleeper spacings (L = {span} m) for a steady state")
+            raise ValueError(f"the profile's period ({float(period):g} m) must be a whole "
+                             f"number of sleeper spacings (L = {span:g} m) for a steady state"
+                             + _fitting_periods(profile, span, wagon))
         cell = SleeperCell.identical(passage, support, sleepers)
     length = cell.sleepers * span
     if abs(wagon / length - round(wagon / length)) > 1e-9:
-        raise ValueError(f"the wagon length H = {wagon} m must be a whole number of cells "
-                         f"(N L = {length} m) for a steady state with wheels")
+        raise ValueError(f"the wagon length H = {wagon:g} m must be a whole number of cells "
+                         f"(N L = {length:g} m) for a steady state with wheels"
+                         + _fitting_periods(profile, span, wagon))
     x = np.linspace(0.0, wagon, 2048, endpoint=False)
     if not callable(profile):
         raise TypeError(f"profile must be a callable r(x) [m], e.g. railtrack.CosineDip(...); "

@@ -11,7 +11,13 @@ import numpy as np
 from .arguments import require_count
 from .result_protocol import period_times
 
-__all__ = ["anchor_sag", "extremes", "loss_of_contact"]
+__all__ = ["anchor_sag", "extremes", "loss_of_contact", "peak_samples", "PEAK_SAMPLING"]
+
+PEAK_SAMPLING = 16
+"""Samples per period of the highest harmonic m that read a peak of P: a short
+blow (a wheel flat's, a joint's P1) lies between two of 4 m samples and reads up
+to 5 % low (394 against 414 kN under a flat at m = 600); 16 m samples read it within
+a few tenths of a percent."""
 
 
 def anchor_sag(solution) -> float:
@@ -34,6 +40,13 @@ def anchor_sag(solution) -> float:
     varying = force - force.mean(axis=1, keepdims=True)
     return float(np.sum(np.mean(varying * shape, axis=1)) * cell**3
                  / (24 * float(solution.passage.rail_bending_stiffness)))
+
+
+def peak_samples(solution, least: int = 4096) -> int:
+    """max(`least`, 16 m) instants over a period: enough to read P's peaks (`PEAK_SAMPLING`)."""
+    top = max(int(solution.harmonics), int(np.max(solution.grid)) if np.size(solution.grid)
+              else 0)
+    return max(int(least), PEAK_SAMPLING * top)
 
 
 def extremes(solution, samples: int = 4096) -> dict[str, np.ndarray]:

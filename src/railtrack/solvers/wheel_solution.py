@@ -26,9 +26,9 @@ from ..equations.wheel_receptance import wheel_receptance
 from ..model.passage import Passage
 from .cell_solution import CellSolution
 from .field_chunks import chunk_length
-from .wheel_extremes import anchor_sag, extremes, loss_of_contact
+from .wheel_extremes import anchor_sag, extremes, loss_of_contact, peak_samples
 from .wheel_free_rail import free_rail
-from .result_protocol import SharedOutputs
+from .result_protocol import SharedOutputs, period_samples
 from .design_figures import DesignFigures
 from .export import Exports
 from .result_repr import ShortRepr, wheel_rows
@@ -213,14 +213,16 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
         """Each sleeper's w_j(t) [m], (N,) + t.shape, positive upward."""
         return self.sleepers.sleeper_displacement(t)
 
-    def extremes(self, samples: int = 4096) -> dict[str, np.ndarray]:
+    def extremes(self, samples: int | None = None) -> dict[str, np.ndarray]:
         """Per wheel: largest and smallest P [N], where they occur [m], mean P [N].
 
         Positions are the wheel's distance from sleeper 0 along the track,
         within one wagon length (0 <= x < H); ``dynamic_factor`` is max P / Q.
-        `samples` >= 1 times over the period (`wheel_extremes.extremes`).
+        `samples` >= 1 times over the period (`wheel_extremes.extremes`); by
+        default `peak_samples`: max(4096, 16 m), so that a short blow (a wheel
+        flat's P1) is not missed between samples.
         """
-        return extremes(self, samples)
+        return extremes(self, peak_samples(self) if samples is None else samples)
 
     def loss_of_contact(self, samples: int = 8192) -> tuple[np.ndarray, np.ndarray]:
         """Per wheel: the share of the period off the rail, and the longest spell off it [s]."""
@@ -264,12 +266,17 @@ class WheelSolution(SharedOutputs, ShortRepr, DesignFigures, Exports):
     _rows = wheel_rows                  # __repr__, _repr_html_ (ShortRepr)
     _table_row = "time"                 # to_dataframe: a row per instant
 
-    def to_xarray(self, samples: int = 400, x=None):
+    def to_xarray(self, samples: int | None = None, x=None):
         """This result as an `xarray.Dataset` over one period of `samples` instants (CF units).
+
+        Default: max(400, 4 m) instants, the results' common default
+        (`railtrack.solvers.result_protocol.period_samples`); a short blow (a
+        wheel flat's P1) reads up to a few percent low on it: `extremes()`
+        reads the peaks on 16 m instants, or pass more `samples` here.
 
         Dimensions, variables and attributes: `railtrack.solvers.result_export`.
         ``x`` [m] adds the rail's displacement and moment along x (dimension x).
         """
         from .result_export import wheel_dataset
-        return wheel_dataset(self, samples, x)
+        return wheel_dataset(self, period_samples(self, samples), x)
 
