@@ -29,15 +29,14 @@ from ..equations.harmonic_balance import nonlinear_coefficients, two_sided
 from ..model.foundations import as_foundation
 from ..model.ground_protocol import check_ground
 from ..model.passage import Passage
-from .arguments import require_count
 from .auto_harmonics import (AUTO_ROUNDS, WARN_TRUNCATION, auto_stopped, first_system,
                              next_system, truncation_warning)
 from .conditioning import check_conditioning
 from .diagnosis import convergence_error
-from .guards import (check_laws_at_rest, checked_accuracy, checked_tol, hold_to_accuracy,
+from .guards import (check_laws_at_rest, hold_to_accuracy,
                      require_scalar_fields, warn_if_displaced)
 from .ground_solution import GroundSolution
-from .methods import check_method_arguments, run_method
+from .methods import checked_harmonics_arguments, run_method
 from .solution import ConvergenceWarning
 from .speed_path import not_converged_advice
 from .truncation import estimate_of
@@ -122,15 +121,8 @@ def solve_on_ground(track, train, foundation, ground, harmonics, method, *, meth
     require_scalar_fields(track, train)
     check_conditioning(passage)
     check_ground(ground, float(passage.sleeper_spacing))
-    automatic = isinstance(harmonics, str) and harmonics == "auto"
-    if not automatic:
-        require_count("harmonics", harmonics, 1)
-    check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split,
-                           stacklevel=4)
-    accuracy = checked_accuracy(accuracy, automatic, stacklevel=4)
-    tol = checked_tol(tol, 1e-10)
-    if max_iterations is not None:
-        max_iterations = require_count("max_iterations", max_iterations, 0)
+    automatic, accuracy, tol, max_iterations = checked_harmonics_arguments(
+        harmonics, method, accuracy, tol, 1e-10, max_iterations, initial, samples, split)
     foundation = as_foundation(foundation)
     check_laws_at_rest([foundation], [float(passage.pad_stiffness)],
                        [float(passage.pad_damping)], check_foundation)

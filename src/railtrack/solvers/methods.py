@@ -10,9 +10,10 @@ import warnings
 
 from .arguments import require_count
 from .fixed_point import automatic_split, contraction_factors
+from .guards import checked_accuracy, checked_tol
 from .newton import linear_guess
 
-__all__ = ["run_method", "check_method_arguments"]
+__all__ = ["run_method", "check_method_arguments", "checked_harmonics_arguments"]
 
 
 def check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split,
@@ -59,3 +60,29 @@ def run_method(methods, method, system, tol, max_iterations, split, initial):
         else:
             used = int(split)
     return methods[method](system, tol, max_iterations, used, initial), used, note
+
+
+def checked_harmonics_arguments(harmonics, method, accuracy, tol, default_tol: float,
+                                max_iterations, initial, samples, split, stacklevel: int = 4):
+    """One sleeper's solve arguments checked as `railtrack.solve` checks them, on any support.
+
+    The sleeper on springs (`railtrack.solvers.sleeper_solve`) and on a ground
+    (`railtrack.solvers.ground_solve`) call this one function, so that both
+    refuse and warn alike.  `stacklevel` names the user's line in the
+    warnings (4: the user, `solve`, the path's solver, here).
+
+    Returns
+    -------
+    (automatic, accuracy, tol, max_iterations)
+        Whether m is "auto", and the checked values.
+    """
+    automatic = isinstance(harmonics, str) and harmonics == "auto"
+    if not automatic:
+        require_count("harmonics", harmonics, 1)
+    check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split,
+                           stacklevel=stacklevel + 1)
+    accuracy = checked_accuracy(accuracy, automatic, stacklevel=stacklevel + 1)
+    tol = checked_tol(tol, default_tol)
+    if max_iterations is not None:
+        max_iterations = require_count("max_iterations", max_iterations, 0)
+    return automatic, accuracy, tol, max_iterations

@@ -19,7 +19,6 @@ import warnings
 from ..equations.harmonic_balance import two_sided
 from ..model.foundations import as_foundation
 from ..model.passage import Passage
-from .arguments import require_count
 from .auto_harmonics import (
     AUTO_ROUNDS,
     WARN_TRUNCATION,
@@ -32,13 +31,11 @@ from .conditioning import check_conditioning
 from .diagnosis import convergence_error
 from .guards import (
     check_laws_at_rest,
-    checked_accuracy,
-    checked_tol,
     hold_to_accuracy,
     look_at_stability,
     require_scalar_fields,
 )
-from .methods import check_method_arguments, run_method
+from .methods import checked_harmonics_arguments, run_method
 from .solution import ConvergenceWarning, Solution
 from .speed_path import not_converged_advice, speed_path
 from .truncation import estimate_of
@@ -62,15 +59,8 @@ def solve_one_sleeper(track, train, foundation, harmonics, method, *, methods, a
     passage = Passage(track, train)
     require_scalar_fields(track, train)
     check_conditioning(passage)
-    automatic = isinstance(harmonics, str) and harmonics == "auto"
-    if not automatic:
-        require_count("harmonics", harmonics, 1)
-    check_method_arguments(method, automatic, tol, max_iterations, initial, samples, split,
-                           stacklevel=4)
-    accuracy = checked_accuracy(accuracy, automatic, stacklevel=4)
-    tol = checked_tol(tol, DEFAULT_TOL)
-    if max_iterations is not None:
-        max_iterations = require_count("max_iterations", max_iterations, 0)
+    automatic, accuracy, tol, max_iterations = checked_harmonics_arguments(
+        harmonics, method, accuracy, tol, DEFAULT_TOL, max_iterations, initial, samples, split)
     foundation = as_foundation(foundation)
     check_laws_at_rest([foundation], [float(passage.pad_stiffness)],
                        [float(passage.pad_damping)], check_foundation)
