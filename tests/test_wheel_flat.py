@@ -167,3 +167,42 @@ def test_extremes_and_the_repr_read_the_flats_blow_as_a_fine_grid_does():
     shown = float(re.search(r"contact force \[kN\]: max ([0-9.]+)", repr(s)).group(1))
     assert shown * 1e3 == pytest.approx(fine, rel=2e-3)  # 4 m samples read 0.6 % low
     assert "WheelFlat on wheel 1" in repr(s)
+
+
+def test_a_flat_on_every_wheel_is_the_rail_dip_of_the_same_shape_exactly():
+    # each wheel of the 2-wheel wagon feels the one flat it carries: the same r(x)
+    # as a rail dip under both, so harmonic balance and the ring give the same answer
+    track, train = rt.Track.ballasted(), rt.Train.paper(speed=30.0)
+    law, wheel = rt.LinearFoundation.ballasted(), rt.Wheel(600.0)
+    dip = rt.CosineDip(0.5e-3, 0.1, 3.0, centre=0.3)
+    flats = rt.ProfileSum(*(rt.WheelFlat(0.5e-3, 0.1, 3.0, wheel=k, centre=0.3)
+                            for k in (0, 1)))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the truncation estimate at m = 300
+        a, b = (rt.solve(track, train, law, 300, wheel=wheel, profile=p) for p in (dip, flats))
+    np.testing.assert_allclose(_peaks(b, 4800), _peaks(a, 4800), rtol=1e-9, atol=1e-6)
+    ring = [rt.simulate_time_domain(track, train, law, 2, 1800, wheel=wheel, profile=p,
+                                    tol=1e-3, warn_step_error=None).contact_forces
+            for p in (dip, flats)]
+    np.testing.assert_allclose(ring[1], ring[0], rtol=1e-9, atol=1e-6)
+
+
+def test_a_flat_on_a_dipped_rail_feels_both_and_the_other_wheel_only_the_dip():
+    # the mean rail height each wheel feels, against the cosine's closed-form mean
+    # -depth length / (2 period): wheel 0 the weld's, wheel 1 the weld's and the flat's
+    weld = rt.CosineDip(0.5e-3, 1.0, 18.0, centre=9.0)
+    both = rt.ProfileSum(weld, rt.WheelFlat(0.5e-3, 0.1, 3.0, wheel=1))
+    assert both.period == 18.0
+    track, train = rt.Track.ballasted(), rt.Train.paper(speed=30.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s = rt.solve(track, train, rt.LinearFoundation.ballasted(), 300,
+                     wheel=rt.Wheel(600.0), profile=both)
+    assert s.converged
+    weld_mean, flat_mean = -0.5e-3 * 1.0 / 36.0, -0.5e-3 * 0.1 / 6.0
+    np.testing.assert_allclose(s.profile_harmonics[:, 0].real,
+                               [weld_mean, weld_mean + flat_mean], rtol=1e-3)
+    with pytest.raises(ValueError, match="repeat together"):
+        rt.ProfileSum(rt.WheelFlat(0.5e-3, 0.1, 3.0), rt.WheelFlat(0.5e-3, 0.1, 3.6))
+    with pytest.raises(TypeError, match="two or more"):
+        rt.ProfileSum(rt.WheelFlat(0.5e-3, 0.1, 3.0))

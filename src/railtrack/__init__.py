@@ -70,6 +70,7 @@ from .model.wheel import Wheel
 from .model.vehicle import Vehicle
 from .model.profile import CosineDip, DippedJoint
 from .model.wheel_flat import WheelFlat
+from .model.profile_sum import ProfileSum
 from .solvers.wheel_solution import WheelSolution
 from .model.timoshenko import TimoshenkoRail
 from .studies.p2_force import EquivalentTrack, equivalent_track, p2_force
@@ -117,6 +118,7 @@ __all__ = [
     "CosineDip",
     "DippedJoint",
     "WheelFlat",
+    "ProfileSum",
     "WheelSolution",
     "TimoshenkoRail",
     "p2_force",

@@ -38,7 +38,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..model.passage import Passage
-from ..model.wheel_flat import felt_by
+from ..model.profile_sum import felt_profile
 from .cell_harmonic_balance import _forces, _synthesize, cell_operators
 from .receptance import bending_wavenumber
 from .wheel_receptance import wheel_receptance
@@ -240,8 +240,9 @@ def profile_harmonics(passage: Passage, profile, grid: np.ndarray, samples: int)
     fine = 4 * int(samples)
     t = np.arange(fine) * float(passage.period) / fine
     positions = np.asarray(passage.axle_positions, dtype=float)
-    r = np.asarray(profile(float(passage.speed) * t[None, :] - positions[:, None]), dtype=float)
-    r = r * felt_by(profile, positions.size)[:, None]      # a wheel flat: its wheel only
+    # a wheel flat is felt by its own wheel only (`railtrack.model.profile_sum`)
+    r = felt_profile(profile, float(passage.speed) * t[None, :] - positions[:, None],
+                     positions.size)
     spectrum = np.fft.rfft(r, axis=-1) / fine
     return np.concatenate([spectrum[:, :1], spectrum[:, grid]], axis=1)
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..model.wheel_flat import felt_by
+from ..model.profile_sum import felt_profile
 from .fem import RingMesh, wheel_positions
 
 __all__ = ["profile_on_ring", "loss_of_contact"]
@@ -56,9 +56,9 @@ def profile_on_ring(profile, mesh: RingMesh, times, wagons: int = 1) -> np.ndarr
                 f"or a ring of wagons such that wagons x {wagon:g} m is a multiple of "
                 f"{float(period):g} m")
     x = wheel_positions(mesh.passage, times)
-    felt = felt_by(profile, x.shape[1], x.shape[1] // wagons)    # a wheel flat: its wheel
-    values = np.asarray(profile(x), dtype=float) * felt
-    shifted = np.asarray(profile(x + ring), dtype=float) * felt
+    per_wagon = x.shape[1] // wagons                   # a wheel flat: its own wheel only
+    values = felt_profile(profile, x, per_wagon, axis=1)
+    shifted = felt_profile(profile, x + ring, per_wagon, axis=1)
     if values.shape != x.shape or not np.all(np.isfinite(values)):
         raise ValueError(f"the rail-top profile must return finite values of x's shape {x.shape}; "
                          f"got shape {values.shape}")
