@@ -206,3 +206,16 @@ def test_a_flat_on_a_dipped_rail_feels_both_and_the_other_wheel_only_the_dip():
         rt.ProfileSum(rt.WheelFlat(0.5e-3, 0.1, 3.0), rt.WheelFlat(0.5e-3, 0.1, 3.6))
     with pytest.raises(TypeError, match="two or more"):
         rt.ProfileSum(rt.WheelFlat(0.5e-3, 0.1, 3.0))
+
+
+def test_the_export_records_the_flat_with_its_units():
+    track, train = rt.Track.ballasted(), rt.Train.paper(speed=30.0)
+    flat = rt.WheelFlat(0.5e-3, 0.1, 3.0, wheel=1, centre=0.3)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s = rt.solve(track, train, rt.LinearFoundation.ballasted(), 60,
+                     wheel=rt.Wheel(600.0), profile=flat)
+    attrs = s.to_xarray(samples=64).attrs
+    assert attrs["profile"] == "WheelFlat" and attrs["profile_wheel"] == 1
+    units = dict(item.split(": ") for item in attrs["input_units"].split("; "))
+    assert units["profile_circumference"] == "m" and units["profile_depth"] == "m"

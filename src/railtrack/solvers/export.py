@@ -75,6 +75,7 @@ FIELD_UNITS = {
     # wheel, rail-top profile, Timoshenko rail
     "unsprung_mass": "kg", "hertz_constant": "N m-1.5", "primary_stiffness": "N m-1",
     "primary_damping": "N s m-1", "depth": "m", "length": "m", "period": "m", "centre": "m",
+    "angle": "rad", "circumference": "m",
     "shear_stiffness": "N", "rotary_inertia": "kg m",
     # vehicle
     "body_mass": "kg", "body_pitch_inertia": "kg m2", "bogie_mass": "kg",
