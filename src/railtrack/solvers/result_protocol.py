@@ -56,7 +56,7 @@ from .cell_static import AtRest, cell_at_rest
 __all__ = ["SteadyStateResult", "PER_SLEEPER", "PER_WHEEL", "ALONG_RAIL", "SHARED_METHODS",
            "SHARED_ATTRIBUTES", "period_samples", "period_times", "one_period",
            "wheel_positions", "moving_contact_force", "rail_under_wheels", "contact_fraction",
-           "single_at_rest", "SharedOutputs"]
+           "single_at_rest", "SharedOutputs", "top_harmonic"]
 
 PER_SLEEPER = ("sleeper_displacement", "sleeper_velocity", "rail_above_sleepers",
                "rail_seat_load", "foundation_force")
@@ -112,13 +112,17 @@ class SteadyStateResult(Protocol):
     def at_rest(self) -> AtRest: ...
 
 
+def top_harmonic(result) -> int:
+    """The highest harmonic a result holds: m, or its wheels' highest p if higher."""
+    grid = getattr(result, "grid", None)
+    return max(int(result.harmonics), int(np.max(grid)) if grid is not None and
+               np.size(grid) else 0)
+
+
 def period_samples(result, samples: int | None = None) -> int:
     """`samples`, or by default max(400, 4 m) with m the highest harmonic of `result`."""
     if samples is None:
-        grid = getattr(result, "grid", None)
-        top = max(int(result.harmonics), int(np.max(grid)) if grid is not None and
-                  np.size(grid) else 0)
-        return max(MIN_SAMPLES, 4 * top)
+        return max(MIN_SAMPLES, 4 * top_harmonic(result))
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
         raise ValueError(f"samples must be a positive integer or None; got {samples!r}")
     return int(samples)

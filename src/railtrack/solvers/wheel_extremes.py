@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from .arguments import require_count
-from .result_protocol import period_times
+from .result_protocol import period_times, top_harmonic
 
 __all__ = ["anchor_sag", "extremes", "loss_of_contact", "peak_samples", "PEAK_SAMPLING"]
 
@@ -44,9 +44,7 @@ def anchor_sag(solution) -> float:
 
 def peak_samples(solution, least: int = 4096) -> int:
     """max(`least`, 16 m) instants over a period: enough to read P's peaks (`PEAK_SAMPLING`)."""
-    top = max(int(solution.harmonics), int(np.max(solution.grid)) if np.size(solution.grid)
-              else 0)
-    return max(int(least), PEAK_SAMPLING * top)
+    return max(int(least), PEAK_SAMPLING * top_harmonic(solution))
 
 
 def extremes(solution, samples: int = 4096) -> dict[str, np.ndarray]:
